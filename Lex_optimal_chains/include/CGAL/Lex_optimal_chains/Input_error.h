@@ -1,0 +1,51 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INPUT_ERROR_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INPUT_ERROR_H
+
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+What was wrong with the input of a function of this package.
+*/
+enum class Input_error_code
+{
+  EMPTY_INPUT,                 ///< no point at all
+  TOO_FEW_POINTS,              ///< fewer than 4 distinct points
+  NON_FINITE_COORDINATE,       ///< a coordinate is NaN or infinite
+  DEGENERATE_POINT_SET,        ///< all points coplanar (or collinear, or equal): no tetrahedron
+  CONSTRAINT_OUTSIDE_HULL,     ///< an interior point lies outside the convex hull of the points
+  CONFLICTING_CONSTRAINTS,     ///< an interior and an exterior constraint fall in the same cell
+  NO_INTERIOR_FOUND,           ///< no interior point was given and none could be chosen
+  INVALID_GRAPH,               ///< a graph given to the generic min-cut is not valid
+  CANCELLED                    ///< the progress callback asked to stop
+};
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+Exception thrown on input a user can get wrong. `what()` says what was wrong and what to do;
+`code()` tells it to a program. Nothing the user gave is modified when it is thrown.
+*/
+class Input_error : public std::invalid_argument
+{
+public:
+  Input_error(Input_error_code code, const std::string& message)
+    : std::invalid_argument(message), code_(code)
+  {}
+
+  Input_error_code code() const { return code_; }
+
+private:
+  Input_error_code code_;
+};
+
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INPUT_ERROR_H

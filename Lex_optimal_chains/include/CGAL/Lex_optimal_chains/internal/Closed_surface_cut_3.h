@@ -1,0 +1,122 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_SURFACE_CUT_3_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_SURFACE_CUT_3_H
+
+// Algorithm 8 on the sorted dual graph of a 3D Delaunay triangulation completed to S^3,
+// and the automatic choice of an interior cell.
+
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Lexicographic_min_cut.h>
+#include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Union_find.h>
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal {
+
+inline double key_value(std::uint64_t key)
+{
+  key &= ~std::uint64_t(1);
+  double d;
+  std::memcpy(&d, &key, sizeof d);
+  return d;
+}
+
+// Result of the automatic interior choice.
+struct Automatic_interior
+{
+  std::uint32_t cell = 0;   // position of the chosen cell
+  double persistence = 0;   // R_B^2 at birth / R_B^2 at death of its component
+};
+
+// The interior of a closed sampled surface is the most persistent void of the filtration
+// of the complex by the triangle order: process the facets in decreasing order and unite
+// the cells on both sides (a plain Kruskal on the dual graph, infinite cells merged). A
+// component is born at its first (largest) facet and dies when it joins an older one
+// (elder rule); the infinite component is the oldest. The cell through which the most
+// persistent finite component was born, measured by the ratio of R_B^2 at birth and at
+// death, is the interior. Exact ties are resolved by the order itself (the first born wins).
+template <class Graph>
+Automatic_interior most_persistent_void(const Graph& graph, const std::vector<std::uint32_t>& infinite_cells)
+{
+  const auto& records = graph.records();
+  const std::size_t n = graph.number_of_cells();
+  constexpr std::uint32_t unborn = std::numeric_limits<std::uint32_t>::max();
+  Union_find sets(n);
+  std::vector<std::uint32_t> birth(n, unborn);      // per root: scan index at birth
+  std::vector<std::uint32_t> birth_cell(n, unborn); // per root: the cell it was born through
+  std::uint32_t infinite_root = infinite_cells.front();
+  for(std::uint32_t c : infinite_cells) infinite_root = sets.unite(infinite_root, c);
+  birth[infinite_root] = 0;
+  birth_cell[infinite_root] = infinite_root;
+
+  Automatic_interior best;
+  bool found = false;
+  const std::size_t m = records.size();
+  for(std::size_t t = 0; t < m; ++t) {
+    const auto& r = records[m - 1 - t];
+    const std::uint32_t scan = std::uint32_t(t + 1);
+    std::uint32_t a = sets.find(Graph::owner_position(r));
+    std::uint32_t b = sets.find(r.other);
+    if(birth[a] == unborn) { birth[a] = scan; birth_cell[a] = Graph::owner_position(r); }
+    if(birth[b] == unborn) { birth[b] = scan; birth_cell[b] = r.other; }
+    if(a == b) continue;
+    // the younger one dies
+    const bool a_younger = birth[a] > birth[b] || (birth[a] == birth[b] && a > b);
+    const std::uint32_t young = a_younger ? a : b, old = a_younger ? b : a;
+    const double born = key_value(records[m - birth[young]].key);
+    const double dies = key_value(r.key);
+    const double persistence = dies > 0 ? born / dies : std::numeric_limits<double>::infinity();
+    if(!found || persistence > best.persistence) {
+      best.cell = birth_cell[young];
+      best.persistence = persistence;
+      found = true;
+    }
+    const std::uint32_t old_birth = birth[old], old_cell = birth_cell[old];
+    const std::uint32_t root = sets.link_roots(a, b);
+    birth[root] = old_birth;
+    birth_cell[root] = old_cell;
+  }
+  if(!found)
+    throw Input_error(Input_error_code::NO_INTERIOR_FOUND,
+                      "no finite cell can be taken as interior; give an interior point");
+  return best;
+}
+
+// Runs Algorithm 8 from the interior cells to the infinite cells plus the exterior cells.
+// Returns the cut records in decreasing order and fills `inside` (per cell position).
+template <class Graph, class Progress>
+std::vector<Dual_edge_record> lexicographic_closed_cut(const Graph& graph,
+                                                       const std::vector<std::uint32_t>& sources,
+                                                       const std::vector<std::uint32_t>& sinks,
+                                                       std::vector<bool>& inside,
+                                                       const Progress& progress)
+{
+  Lexicographic_min_cut cut(graph.number_of_cells(), sources, sinks);
+  std::vector<Dual_edge_record> result;
+  const auto& records = graph.records();
+  const std::size_t m = records.size();
+  for(std::size_t t = 0; t < m; ++t) {
+    if((t & 0xfffff) == 0 && !progress(double(t) / double(m)))
+      throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+    const auto& r = records[m - 1 - t];
+    if(cut.process(Graph::owner_position(r), r.other)) result.push_back(r);
+  }
+  inside.assign(graph.number_of_cells(), false);
+  for(std::uint32_t c = 0; c < graph.number_of_cells(); ++c)
+    inside[c] = cut.is_on_source_side(c);
+  return result;
+}
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_SURFACE_CUT_3_H

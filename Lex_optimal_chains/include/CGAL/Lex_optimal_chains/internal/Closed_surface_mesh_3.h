@@ -1,0 +1,233 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_SURFACE_MESH_3_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_SURFACE_MESH_3_H
+
+// The boundary of a union of tetrahedra (the inside cells) as a closed, oriented,
+// combinatorial 2-manifold. Non-manifold places are resolved as for an infinitesimally
+// shrunk union: around a Delaunay edge shared by several inside wedges, each wedge gets its
+// own copy of the edge (the twin of a boundary half-edge is found by turning around the
+// edge through inside cells only); around a vertex, each umbrella (cycle of facets linked
+// by twins) gets its own copy of the vertex.
+
+#include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Union_find.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal {
+
+// Local indices of the vertices of facet i of a positively oriented cell, in the order
+// that makes the facet's normal point out of the cell.
+inline std::array<int, 3> outward_facet_vertices(int i)
+{
+  std::array<int, 3> v{{(i + 1) & 3, (i + 2) & 3, (i + 3) & 3}};
+  if(i & 1) std::swap(v[1], v[2]);
+  return v;
+}
+
+struct Closed_surface_statistics
+{
+  std::size_t vertices = 0, faces = 0, components = 0;
+  std::size_t non_manifold_vertices = 0, non_manifold_edges = 0;
+  long genus = 0;
+};
+
+template <class Triangulation>
+class Closed_surface_mesh_3
+{
+public:
+  using Cell_handle = typename Triangulation::Cell_handle;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Facet = typename Triangulation::Facet;
+  using Vertex = typename Triangulation::Vertex;
+
+  // `facets`: the boundary facets, each given by its inside cell; `is_inside(c)`.
+  template <class IsInside>
+  Closed_surface_mesh_3(const Triangulation& dt, const std::vector<Facet>& facets, const IsInside& is_inside)
+    : facets_(facets)
+  {
+    const std::size_t nf = facets_.size();
+    // facet lookup: (cell, index) -> position in `facets_`, by a sorted table
+    lookup_.reserve(nf);
+    for(std::size_t k = 0; k < nf; ++k)
+      lookup_.push_back(Lookup{&*facets_[k].first, std::uint32_t(facets_[k].second), std::uint32_t(k)});
+    std::sort(lookup_.begin(), lookup_.end());
+
+    twin_.assign(3 * nf, 0);
+    for(std::size_t k = 0; k < nf; ++k)
+      for(int e = 0; e < 3; ++e)
+        twin_[3 * k + e] = find_twin(k, e, is_inside);
+
+    // umbrellas: corners (k, i) around a vertex linked through twins
+    Union_find corners(3 * nf);
+    for(std::size_t k = 0; k < nf; ++k)
+      for(int e = 0; e < 3; ++e) {
+        const std::uint32_t h = std::uint32_t(3 * k + e), o = twin_[h];
+        const std::uint32_t ko = o / 3, eo = o % 3;
+        corners.unite(h, 3 * ko + (eo + 1) % 3); // source of h = target of its twin
+      }
+    corner_vertex_.assign(3 * nf, 0);
+    std::vector<std::uint32_t> copy_of_root(3 * nf, UINT32_MAX);
+    for(std::uint32_t c = 0; c < 3 * nf; ++c) {
+      const std::uint32_t r = corners.find(c);
+      if(copy_of_root[r] == UINT32_MAX) {
+        copy_of_root[r] = std::uint32_t(copies_.size());
+        copies_.push_back(vertex(c));
+      }
+      corner_vertex_[c] = copy_of_root[r];
+    }
+
+    // statistics
+    stats_.vertices = copies_.size();
+    stats_.faces = nf;
+    std::vector<const Vertex*> copied(copies_.size());
+    for(std::size_t i = 0; i < copies_.size(); ++i) copied[i] = &*copies_[i];
+    std::sort(copied.begin(), copied.end());
+    for(std::size_t i = 1; i < copied.size(); ++i)
+      if(copied[i] == copied[i - 1] && (i < 2 || copied[i - 2] != copied[i])) ++stats_.non_manifold_vertices;
+
+    std::vector<std::pair<const Vertex*, const Vertex*>> edges;
+    edges.reserve(3 * nf / 2);
+    for(std::uint32_t h = 0; h < 3 * nf; ++h)
+      if(h < twin_[h]) {
+        const Vertex* a = &*vertex(h);
+        const Vertex* b = &*vertex(3 * (h / 3) + (h % 3 + 1) % 3);
+        edges.emplace_back((std::min)(a, b), (std::max)(a, b));
+      }
+    std::sort(edges.begin(), edges.end());
+    for(std::size_t i = 1; i < edges.size(); ++i)
+      if(edges[i] == edges[i - 1] && (i < 2 || edges[i - 2] != edges[i])) ++stats_.non_manifold_edges;
+
+    Union_find components(nf);
+    for(std::uint32_t h = 0; h < 3 * nf; ++h) components.unite(h / 3, twin_[h] / 3);
+    std::vector<std::int64_t> v_count(nf, 0), f_count(nf, 0);
+    for(std::uint32_t k = 0; k < nf; ++k) ++f_count[components.find(k)];
+    std::vector<std::uint8_t> seen(copies_.size(), 0);
+    for(std::uint32_t c = 0; c < 3 * nf; ++c)
+      if(!seen[corner_vertex_[c]]) { seen[corner_vertex_[c]] = 1; ++v_count[components.find(c / 3)]; }
+    for(std::uint32_t k = 0; k < nf; ++k)
+      if(components.find(k) == k) {
+        ++stats_.components;
+        const std::int64_t chi = v_count[k] - 3 * f_count[k] / 2 + f_count[k];
+        stats_.genus += long((2 - chi) / 2);
+      }
+  }
+
+  const Closed_surface_statistics& statistics() const { return stats_; }
+
+  // Writes the surface into an empty `PolygonMesh` (a model of `MutableFaceGraph`).
+  template <class PolygonMesh, class VertexPointMap>
+  void build(PolygonMesh& mesh, VertexPointMap vpm) const
+  {
+    using GT = boost::graph_traits<PolygonMesh>;
+    using vertex_descriptor = typename GT::vertex_descriptor;
+    using halfedge_descriptor = typename GT::halfedge_descriptor;
+    using face_descriptor = typename GT::face_descriptor;
+
+    std::vector<vertex_descriptor> vd(copies_.size());
+    for(std::size_t i = 0; i < copies_.size(); ++i) {
+      vd[i] = add_vertex(mesh);
+      put(vpm, vd[i], copies_[i]->point());
+    }
+    std::vector<halfedge_descriptor> hd(twin_.size());
+    for(std::uint32_t h = 0; h < twin_.size(); ++h) {
+      if(h > twin_[h]) continue;
+      const halfedge_descriptor a = halfedge(add_edge(mesh), mesh);
+      hd[h] = a;
+      hd[twin_[h]] = opposite(a, mesh);
+    }
+    for(std::uint32_t h = 0; h < twin_.size(); ++h) {
+      const std::uint32_t target_corner = 3 * (h / 3) + (h % 3 + 1) % 3;
+      set_target(hd[h], vd[corner_vertex_[target_corner]], mesh);
+      set_halfedge(vd[corner_vertex_[target_corner]], hd[h], mesh);
+    }
+    for(std::uint32_t k = 0; 3 * k < twin_.size(); ++k) {
+      const face_descriptor f = add_face(mesh);
+      for(int e = 0; e < 3; ++e) {
+        set_next(hd[3 * k + e], hd[3 * k + (e + 1) % 3], mesh);
+        set_face(hd[3 * k + e], f, mesh);
+      }
+      set_halfedge(f, hd[3 * k], mesh);
+    }
+  }
+
+private:
+  struct Lookup
+  {
+    const typename Triangulation::Cell* cell;
+    std::uint32_t index, position;
+    bool operator<(const Lookup& o) const
+    {
+      return std::less<const void*>()(cell, o.cell) || (cell == o.cell && index < o.index);
+    }
+  };
+
+  std::uint32_t position(Cell_handle c, int i) const
+  {
+    const Lookup key{&*c, std::uint32_t(i), 0};
+    auto it = std::lower_bound(lookup_.begin(), lookup_.end(), key);
+    CGAL_assertion(it != lookup_.end() && it->cell == &*c && it->index == std::uint32_t(i));
+    return it->position;
+  }
+
+  // DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
+  Vertex_handle vertex(std::uint32_t c) const
+  {
+    const Facet& f = facets_[c / 3];
+    return f.first->vertex(outward_facet_vertices(f.second)[c % 3]);
+  }
+
+  // Half-edge 3k+e goes from outward vertex e to outward vertex e+1 of facet k. Its twin is
+  // the boundary half-edge met first when turning around that edge through inside cells.
+  template <class IsInside>
+  std::uint32_t find_twin(std::size_t k, int e, const IsInside& is_inside) const
+  {
+    const Vertex_handle u = vertex(std::uint32_t(3 * k + e));
+    const Vertex_handle v = vertex(std::uint32_t(3 * k + (e + 1) % 3));
+    Cell_handle cur = facets_[k].first;
+    Vertex_handle behind = cur->vertex(facets_[k].second); // we "arrive" through the facet opposite it
+    for(std::size_t guard = 0;; ++guard) {
+      CGAL_assertion(guard < 100000);
+      int q = -1;
+      for(int i = 0; i < 4; ++i) {
+        const Vertex_handle w = cur->vertex(i);
+        if(w != u && w != v && w != behind) { q = i; break; }
+      }
+      CGAL_assertion(q >= 0);
+      const Cell_handle next = cur->neighbor(q);
+      if(!is_inside(next)) {
+        const std::uint32_t k2 = position(cur, q);
+        const auto ov = outward_facet_vertices(q);
+        for(int e2 = 0; e2 < 3; ++e2)
+          if(cur->vertex(ov[e2]) == v && cur->vertex(ov[(e2 + 1) % 3]) == u) return 3 * k2 + e2;
+        CGAL_error_msg("inconsistent orientation around an edge");
+      }
+      behind = next->vertex(next->index(cur)); // the vertex of `next` facing away from `cur`
+      cur = next;
+    }
+  }
+
+  const std::vector<Facet>& facets_;
+  std::vector<Lookup> lookup_;
+  std::vector<std::uint32_t> twin_;
+  std::vector<std::uint32_t> corner_vertex_;
+  std::vector<Vertex_handle> copies_;
+  Closed_surface_statistics stats_;
+};
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_SURFACE_MESH_3_H

@@ -1,0 +1,100 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_HANDLE_INDEX_MAP_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_HANDLE_INDEX_MAP_H
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal {
+
+// Dense indices for the elements of a container whose elements live in a few contiguous
+// blocks (CGAL's Compact_container, as used by the triangulation data structures).
+// Index i is the position of the element in the iteration order, plus `first_index`.
+// The elements are grouped in runs of consecutive addresses; a page table over the
+// address range sends a pointer to the first run that can hold it. Memory is
+// O(number of runs + address range / page size) and a look-up reads a few cached words,
+// instead of a hash table over millions of handles.
+template <class Element>
+class Handle_index_map
+{
+  struct Run { const Element* begin; std::uint32_t size; std::uint32_t first; };
+
+public:
+  Handle_index_map() = default;
+
+  // `range` is iterated once; each element is accessed by address (`&*it`).
+  template <class Iterator>
+  Handle_index_map(Iterator begin, Iterator end, std::uint32_t first_index = 0)
+  {
+    std::uint32_t index = first_index;
+    for(Iterator it = begin; it != end; ++it, ++index) {
+      const Element* p = &*it;
+      if(runs_.empty() || p != runs_.back().begin + runs_.back().size)
+        runs_.push_back(Run{p, 0, index});
+      ++runs_.back().size;
+    }
+    count_ = index - first_index;
+    by_index_ = runs_; // runs in iteration order, for index -> element
+    std::sort(runs_.begin(), runs_.end(),
+              [](const Run& a, const Run& b) { return std::less<const Element*>()(a.begin, b.begin); });
+    if(runs_.empty()) return;
+    low_ = reinterpret_cast<std::uintptr_t>(runs_.front().begin);
+    const std::uintptr_t high = reinterpret_cast<std::uintptr_t>(runs_.back().begin + runs_.back().size);
+    const std::size_t npages = (high - low_) / page_size + 1;
+    page_.assign(npages, 0);
+    std::size_t r = 0;
+    for(std::size_t k = 0; k < npages; ++k) {
+      const std::uintptr_t page_begin = low_ + k * page_size;
+      while(r + 1 < runs_.size() &&
+            reinterpret_cast<std::uintptr_t>(runs_[r].begin + runs_[r].size) <= page_begin)
+        ++r;
+      page_[k] = std::uint32_t(r);
+    }
+  }
+
+  std::size_t size() const { return count_; }
+
+  std::uint32_t index(const Element* p) const
+  {
+    const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(p);
+    CGAL_precondition(!runs_.empty() && a >= low_);
+    std::size_t r = page_[(a - low_) / page_size];
+    while(!(p >= runs_[r].begin && p < runs_[r].begin + runs_[r].size)) {
+      ++r;
+      CGAL_assertion(r < runs_.size());
+    }
+    return runs_[r].first + std::uint32_t(p - runs_[r].begin);
+  }
+
+  const Element* element(std::uint32_t i) const
+  {
+    auto it = std::upper_bound(by_index_.begin(), by_index_.end(), i,
+                               [](std::uint32_t v, const Run& run) { return v < run.first; });
+    CGAL_precondition(it != by_index_.begin());
+    --it;
+    CGAL_precondition(i - it->first < it->size);
+    return it->begin + (i - it->first);
+  }
+
+private:
+  static constexpr std::uintptr_t page_size = 1 << 14;
+  std::vector<Run> runs_;     // sorted by address
+  std::vector<Run> by_index_; // sorted by index
+  std::vector<std::uint32_t> page_;
+  std::uintptr_t low_ = 0;
+  std::size_t count_ = 0;
+};
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_HANDLE_INDEX_MAP_H

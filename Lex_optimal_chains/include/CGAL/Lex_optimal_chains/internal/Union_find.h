@@ -1,0 +1,75 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H
+
+#include <CGAL/assertions.h>
+
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal {
+
+// Disjoint sets over the dense indices [0, n): path halving and union by size.
+// Sizes are kept in a separate array so that `find` touches one 32-bit word per step.
+class Union_find
+{
+public:
+  using Index = std::uint32_t;
+
+  explicit Union_find(std::size_t n = 0) { reset(n); }
+
+  void reset(std::size_t n)
+  {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), Index(0));
+    size_.assign(n, 1);
+  }
+
+  std::size_t size() const { return parent_.size(); }
+
+  Index find(Index x)
+  {
+    CGAL_precondition(x < parent_.size());
+    while(parent_[x] != x) {
+      parent_[x] = parent_[parent_[x]];
+      x = parent_[x];
+    }
+    return x;
+  }
+
+  // Links the two roots `a` and `b` (which must be roots) and returns the new root.
+  Index link_roots(Index a, Index b)
+  {
+    CGAL_precondition(parent_[a] == a && parent_[b] == b);
+    if(a == b) return a;
+    if(size_[a] < size_[b]) std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+    return a;
+  }
+
+  Index unite(Index a, Index b) { return link_roots(find(a), find(b)); }
+
+  // Releases the memory of the parent array to the caller (for reuse as scratch space).
+  std::vector<Index> release_parents()
+  {
+    std::vector<Index>().swap(size_);
+    return std::move(parent_);
+  }
+
+private:
+  std::vector<Index> parent_;
+  std::vector<Index> size_;
+};
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H

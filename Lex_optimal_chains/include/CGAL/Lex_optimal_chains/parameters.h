@@ -1,0 +1,59 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_PARAMETERS_H
+#define CGAL_LEX_OPTIMAL_CHAINS_PARAMETERS_H
+
+// Named parameters of this package that CGAL 5.5 does not have. Each `foo(x)` starts a
+// pack and `foo(x, np)` appends to one; all of CGAL's own parameters are re-exported, so
+// `Lex_optimal_chains::parameters::verbose(true)` works as well.
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal_np {
+
+enum interior_points_t { interior_points };
+enum exterior_points_t { exterior_points };
+enum number_of_threads_t { number_of_threads };
+enum minimum_interior_persistence_t { minimum_interior_persistence };
+
+} // namespace internal_np
+
+namespace parameters {
+
+using namespace CGAL::parameters;
+
+#define CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(NAME)                                                   \
+  template <class T>                                                                              \
+  Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& t)                           \
+  {                                                                                               \
+    return Named_function_parameters<T, internal_np::NAME##_t>(t);                                \
+  }                                                                                               \
+  template <class T, class U, class Tag, class Base>                                              \
+  Named_function_parameters<T, internal_np::NAME##_t, Named_function_parameters<U, Tag, Base>>    \
+  NAME(const T& t, const Named_function_parameters<U, Tag, Base>& np)                            \
+  {                                                                                               \
+    return Named_function_parameters<T, internal_np::NAME##_t,                                    \
+                                     Named_function_parameters<U, Tag, Base>>(t, np);             \
+  }
+
+/// Points inside the surface to reconstruct (a range of `Point_3`): their cells are merged
+/// into the interior constraint \f$\alpha_1\f$.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(interior_points)
+/// Points outside the surface (a range of `Point_3`), added to the exterior constraint
+/// \f$\alpha_2\f$ (which always holds the infinite vertex).
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(exterior_points)
+/// Number of threads for the Delaunay triangulation (needs TBB); the result does not depend on it.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(number_of_threads)
+/// Smallest persistence ratio accepted for an automatically chosen interior.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(minimum_interior_persistence)
+
+#undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
+
+} // namespace parameters
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_PARAMETERS_H

@@ -1,0 +1,412 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CLOSED_SURFACE_H
+#define CGAL_LEX_OPTIMAL_CLOSED_SURFACE_H
+
+/// \file lex_optimal_closed_surface.h
+/// Closed surface reconstruction as a lexicographic optimal 2-cycle (thesis section 4.8.1).
+
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Closed_surface_cut_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Closed_surface_mesh_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+What a closed surface reconstruction did: sizes, the automatic interior, timings and the
+topology of the output. Fields that a function does not compute stay at zero.
+*/
+struct Closed_surface_report
+{
+  std::size_t number_of_input_points = 0;      ///< points given (reconstruction only)
+  std::size_t number_of_vertices = 0;          ///< vertices of the triangulation
+  std::size_t number_of_triangles = 0;         ///< finite facets of the triangulation (dual edges)
+  std::size_t number_of_exactly_ordered_triangles = 0; ///< triangles the fast sort handed to the exact comparator
+  std::size_t number_of_facets = 0;            ///< facets of the optimal 2-cycle
+  bool automatic_interior = false;             ///< true if the interior cell was chosen automatically
+  double interior_persistence = 0;             ///< persistence ratio of the automatic interior
+  double delaunay_seconds = 0, order_seconds = 0, cut_seconds = 0, output_seconds = 0, total_seconds = 0;
+  // output mesh (reconstruction only)
+  std::size_t mesh_vertices = 0, mesh_faces = 0, components = 0;
+  std::size_t non_manifold_vertices = 0;       ///< triangulation vertices split in several mesh vertices
+  std::size_t non_manifold_edges = 0;          ///< triangulation edges split in several mesh edges
+  long genus = 0;                              ///< sum of the genera of the components
+};
+
+namespace internal {
+
+class Stopwatch
+{
+public:
+  double lap()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// Maps the progress of one stage to [from, to] of the user's callback.
+struct Stage_progress
+{
+  const std::function<bool(double)>* callback;
+  double from, to;
+  bool operator()(double x) const { return !*callback || (*callback)(from + (to - from) * x); }
+};
+
+// Cells (by position in the graph) that hold the constraint points.
+template <class Triangulation, class Graph, class PointRange>
+std::vector<std::uint32_t> constraint_cells(const Triangulation& dt, const Graph& graph,
+                                            const PointRange& points, bool interior)
+{
+  std::vector<std::uint32_t> cells;
+  for(const auto& p : points) {
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Input_error(Input_error_code::NON_FINITE_COORDINATE, "a constraint point has a NaN or infinite coordinate");
+    typename Triangulation::Locate_type lt;
+    int li, lj;
+    const typename Triangulation::Cell_handle c = dt.locate(p, lt, li, lj);
+    std::vector<typename Triangulation::Cell_handle> incident;
+    switch(lt) {
+      case Triangulation::CELL: incident.push_back(c); break;
+      case Triangulation::FACET: incident.push_back(c); incident.push_back(c->neighbor(li)); break;
+      case Triangulation::EDGE: {
+        auto circ = dt.incident_cells(c, li, lj), done = circ;
+        do { incident.push_back(circ); } while(++circ != done);
+        break;
+      }
+      case Triangulation::VERTEX: dt.incident_cells(c->vertex(li), std::back_inserter(incident)); break;
+      default: incident.push_back(c); break; // outside the convex hull: an infinite cell
+    }
+    for(const auto& ic : incident) {
+      if(interior && dt.is_infinite(ic)) {
+        std::ostringstream msg;
+        msg << "interior point (" << p << ") is not inside the convex hull of the points";
+        throw Input_error(Input_error_code::CONSTRAINT_OUTSIDE_HULL, msg.str());
+      }
+      cells.push_back(graph.position(ic));
+    }
+  }
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  return cells;
+}
+
+// The common part: sorted dual graph, constraints, Algorithm 8. Returns the facets of the
+// optimal cycle, each as (inside cell, index), in decreasing order; fills `inside`.
+template <class Triangulation, class NamedParameters>
+std::vector<typename Triangulation::Facet>
+closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
+                      const std::function<bool(double)>& callback, double progress_from,
+                      Closed_surface_report& report, std::vector<bool>& inside)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::get_parameter_reference;
+  using Point = typename Triangulation::Point;
+
+  if(dt.dimension() < 3)
+    throw Input_error(dt.number_of_vertices() < 4 ? Input_error_code::TOO_FEW_POINTS
+                                                  : Input_error_code::DEGENERATE_POINT_SET,
+                      dt.number_of_vertices() < 4
+                        ? "fewer than 4 distinct points: no closed surface can be built"
+                        : "all points are coplanar: the triangulation has no tetrahedron");
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const double span = 1.0 - progress_from;
+  Stopwatch watch;
+
+  Sorted_dual_graph_3<Triangulation> graph(dt, Stage_progress{&callback, progress_from, progress_from + 0.6 * span});
+  report.number_of_vertices = dt.number_of_vertices();
+  report.number_of_triangles = graph.records().size();
+  report.number_of_exactly_ordered_triangles = graph.number_of_repaired_records();
+  report.order_seconds = watch.lap();
+  if(verbose)
+    std::cerr << "Lex_optimal_chains: ordered " << graph.records().size() << " triangles ("
+              << graph.number_of_repaired_records() << " exactly) in " << report.order_seconds << " s\n";
+
+  std::vector<std::uint32_t> infinite;
+  {
+    std::vector<typename Triangulation::Cell_handle> hull;
+    dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
+    for(const auto& c : hull) infinite.push_back(graph.position(c));
+  }
+  const std::vector<Point> no_points;
+  const auto& interior_points = choose_parameter(get_parameter_reference(np, Lex_optimal_chains::internal_np::interior_points), no_points);
+  const auto& exterior_points = choose_parameter(get_parameter_reference(np, Lex_optimal_chains::internal_np::exterior_points), no_points);
+  std::vector<std::uint32_t> sources = constraint_cells(dt, graph, interior_points, true);
+  std::vector<std::uint32_t> sinks = constraint_cells(dt, graph, exterior_points, false);
+  sinks.insert(sinks.end(), infinite.begin(), infinite.end());
+  std::sort(sinks.begin(), sinks.end());
+  sinks.erase(std::unique(sinks.begin(), sinks.end()), sinks.end());
+  for(std::uint32_t s : sources)
+    if(std::binary_search(sinks.begin(), sinks.end(), s))
+      throw Input_error(Input_error_code::CONFLICTING_CONSTRAINTS,
+                        "an interior point and an exterior point lie in the same Delaunay cell");
+  if(sources.empty()) {
+    const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
+    const Automatic_interior a = most_persistent_void(graph, infinite);
+    report.automatic_interior = true;
+    report.interior_persistence = a.persistence;
+    if(!(a.persistence >= minimum)) {
+      std::ostringstream msg;
+      msg << "no interior point given, and the most persistent void has a persistence of only "
+          << a.persistence << " (< " << minimum << "): the points do not seem to sample a closed "
+          << "surface; give an interior point";
+      throw Input_error(Input_error_code::NO_INTERIOR_FOUND, msg.str());
+    }
+    sources.push_back(a.cell);
+    if(verbose)
+      std::cerr << "Lex_optimal_chains: automatic interior cell, persistence " << a.persistence << "\n";
+  }
+
+  const std::vector<Dual_edge_record> cut =
+    lexicographic_closed_cut(graph, sources, sinks, inside,
+                             Stage_progress{&callback, progress_from + 0.6 * span, progress_from + 0.8 * span});
+  std::vector<typename Triangulation::Facet> facets;
+  facets.reserve(cut.size());
+  for(const Dual_edge_record& r : cut) {
+    const auto owner = graph.cell(Sorted_dual_graph_3<Triangulation>::owner_position(r));
+    const int j = Sorted_dual_graph_3<Triangulation>::facet_index(r);
+    if(inside[Sorted_dual_graph_3<Triangulation>::owner_position(r)]) facets.emplace_back(owner, j);
+    else facets.emplace_back(owner->neighbor(j), owner->neighbor(j)->index(owner));
+  }
+  report.number_of_facets = facets.size();
+  report.cut_seconds = watch.lap();
+  if(verbose)
+    std::cerr << "Lex_optimal_chains: cut " << facets.size() << " facets in " << report.cut_seconds << " s\n";
+  // `inside` is indexed by graph position: translate to a per-cell predicate for the caller
+  return facets;
+}
+
+template <class Triangulation>
+struct Inside_predicate
+{
+  const Handle_index_map<typename Triangulation::Cell>* map;
+  const std::vector<bool>* inside;
+  bool operator()(typename Triangulation::Cell_handle c) const { return (*inside)[map->index(&*c)]; }
+};
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Computes the lexicographic optimal 2-cycle of the Delaunay triangulation `dt` completed to
+\f$S^3\f$ by its infinite vertex that separates the interior constraint from the exterior
+one (Algorithm 8 of the thesis on the dual graph, triangles ordered by Lemma 4.14).
+
+The result is the boundary of a union of finite tetrahedra (the *inside* cells). Each of its
+facets is written to `facets` as a `DT::Facet` `(c, i)` where `c` is the inside cell, in
+decreasing triangle order; the triangle `c->vertex((i+1)&3), c->vertex((i+2)&3),
+c->vertex((i+3)&3)`, with its last two vertices swapped when `i` is odd, is oriented outward.
+
+\tparam DT a `Delaunay_triangulation_3` whose points have `double` coordinates
+\param dt the triangulation; it is not modified
+\param facets output iterator accepting `DT::Facet`
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{interior_points}
+    \cgalParamDescription{points inside the surface; the cells that hold them form the interior constraint}
+    \cgalParamType{a range of `DT::Point`}
+    \cgalParamDefault{empty: the interior is chosen automatically as the most persistent void}
+  \cgalParamNEnd
+  \cgalParamNBegin{exterior_points}
+    \cgalParamDescription{points outside the surface, added to the exterior constraint}
+    \cgalParamType{a range of `DT::Point`}
+    \cgalParamDefault{empty: the exterior is the infinite vertex only}
+  \cgalParamNEnd
+  \cgalParamNBegin{minimum_interior_persistence}
+    \cgalParamDescription{the automatic interior is refused below this persistence ratio}
+    \cgalParamType{`double`}
+    \cgalParamDefault{4}
+  \cgalParamNEnd
+  \cgalParamNBegin{callback}
+    \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels}
+    \cgalParamType{`std::function<bool(double)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{prints the stages and their timings to `std::cerr`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns a report; only its triangulation, order and cut fields are filled.
+\throws Lex_optimal_chains::Input_error on a triangulation of dimension below 3, an interior
+point outside the convex hull, conflicting constraints, or when no interior can be chosen.
+*/
+template <class DT, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Closed_surface_report
+lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
+                           const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  Lex_optimal_chains::Closed_surface_report report;
+  Lex_optimal_chains::internal::Stopwatch total;
+  std::vector<bool> inside;
+  const auto result = Lex_optimal_chains::internal::closed_surface_facets(dt, np, callback, 0.0, report, inside);
+  std::copy(result.begin(), result.end(), facets);
+  if(callback) callback(1.0);
+  report.total_seconds = total.lap();
+  return report;
+}
+
+namespace Lex_optimal_chains {
+namespace internal {
+
+template <class Triangulation, class PolygonMesh, class NamedParameters>
+void reconstruct_in(Triangulation& dt, PolygonMesh& mesh, const NamedParameters& np,
+                    const std::function<bool(double)>& callback, Closed_surface_report& report,
+                    Stopwatch& watch)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  std::vector<bool> inside;
+  const auto facets = closed_surface_facets(dt, np, callback, 0.35, report, inside);
+  // map cells to the positions used by `inside`
+  const Handle_index_map<typename Triangulation::Cell> positions(dt.tds().cells().begin(), dt.tds().cells().end());
+  watch.lap();
+  Closed_surface_mesh_3<Triangulation> surface(dt, facets, Inside_predicate<Triangulation>{&positions, &inside});
+  surface.build(mesh, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh)));
+  const Closed_surface_statistics& s = surface.statistics();
+  report.mesh_vertices = s.vertices;
+  report.mesh_faces = s.faces;
+  report.components = s.components;
+  report.non_manifold_vertices = s.non_manifold_vertices;
+  report.non_manifold_edges = s.non_manifold_edges;
+  report.genus = s.genus;
+  report.output_seconds = watch.lap();
+}
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Reconstructs a closed surface from a point cloud: builds the 3D Delaunay triangulation of the
+points, computes the lexicographic optimal 2-cycle that separates the interior from the
+outside (see `lex_optimal_closed_surface()`), and adds it to `mesh` as a closed, oriented
+(outward) triangle mesh. Non-manifold edges and vertices of the boundary of the union of
+inside tetrahedra are split, one copy per wedge around an edge and one per umbrella around a
+vertex, as for an infinitesimally shrunk union; their numbers are reported.
+
+\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+\tparam PolygonMesh a model of `MutableFaceGraph`
+\param points the input points (duplicates are merged); not modified
+\param mesh the output; the surface is added to it only on success
+\param np the named parameters of `lex_optimal_closed_surface()`, and:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map giving the point of an element of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` with value type a `Point_3` of an `Epick`-like kernel}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB); the result does not depend on it}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws Lex_optimal_chains::Input_error on empty input, NaN or infinite coordinates, fewer than
+4 distinct points, coplanar points, and the errors of `lex_optimal_closed_surface()`.
+*/
+template <class PointRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Closed_surface_report
+lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh& mesh,
+                                          const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
+  using Point = typename boost::property_traits<Point_map>::value_type;
+  using Kernel = typename Kernel_traits<Point>::Kernel;
+  static_assert(std::is_same<typename Kernel::FT, double>::value,
+                "lex_optimal_closed_surface_reconstruction needs points with double coordinates (e.g. Epick)");
+  using Input_error = Lex_optimal_chains::Input_error;
+  using Code = Lex_optimal_chains::Input_error_code;
+
+  const Point_map point_map = choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map));
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  const unsigned threads = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::number_of_threads), 1u);
+
+  Lex_optimal_chains::Closed_surface_report report;
+  Lex_optimal_chains::internal::Stopwatch total, watch;
+  std::vector<Point> pts;
+  for(const auto& e : points) {
+    const Point& p = get(point_map, e);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Input_error(Code::NON_FINITE_COORDINATE,
+                        "point " + std::to_string(pts.size()) + " has a NaN or infinite coordinate");
+    pts.push_back(p);
+  }
+  report.number_of_input_points = pts.size();
+  if(pts.empty()) throw Input_error(Code::EMPTY_INPUT, "no input point");
+  if(callback && !callback(0.0)) throw Input_error(Code::CANCELLED, "cancelled by the callback");
+
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads > 1) {
+    using Vb = Triangulation_vertex_base_3<Kernel>;
+    using Cb = Delaunay_triangulation_cell_base_3<Kernel>;
+    using Tds = Triangulation_data_structure_3<Vb, Cb, Parallel_tag>;
+    using DT = Delaunay_triangulation_3<Kernel, Tds>;
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    Bbox_3 box = bbox_3(pts.begin(), pts.end());
+    typename DT::Lock_data_structure locks(box, 50);
+    DT dt(pts.begin(), pts.end(), &locks);
+    dt.set_lock_data_structure(nullptr);
+    std::vector<Point>().swap(pts);
+    report.delaunay_seconds = watch.lap();
+    Lex_optimal_chains::internal::reconstruct_in(dt, mesh, np, callback, report, watch);
+    if(callback) callback(1.0);
+    report.total_seconds = total.lap();
+    return report;
+  }
+#endif
+  CGAL_USE(threads);
+  Delaunay_triangulation_3<Kernel> dt(pts.begin(), pts.end());
+  std::vector<Point>().swap(pts);
+  report.delaunay_seconds = watch.lap();
+  Lex_optimal_chains::internal::reconstruct_in(dt, mesh, np, callback, report, watch);
+  if(callback) callback(1.0);
+  report.total_seconds = total.lap();
+  return report;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CLOSED_SURFACE_H
