@@ -96,8 +96,14 @@ int main(int argc, char** argv)
     for(const std::string& t : exterior_text) exterior.push_back(parse_point(t));
 
     std::vector<Point> points;
-    if(!CGAL::IO::read_points(input, std::back_inserter(points)))
-      throw std::invalid_argument("cannot read points from '" + input + "'");
+    {
+      // CGAL's readers print their own diagnostics: keep the one-line reason of this program
+      std::ostringstream reader_messages;
+      std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
+      const bool read = CGAL::IO::read_points(input, std::back_inserter(points));
+      std::cerr.rdbuf(saved);
+      if(!read) throw std::invalid_argument("cannot read points from '" + input + "'");
+    }
 
     std::unique_ptr<boost::timer::progress_display> bar;
     if(isatty(STDERR_FILENO)) bar.reset(new boost::timer::progress_display(100, std::cerr));

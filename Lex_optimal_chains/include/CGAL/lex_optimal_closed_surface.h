@@ -129,7 +129,6 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::get_parameter_reference;
   using Point = typename Triangulation::Point;
 
   if(dt.dimension() < 3)
@@ -157,11 +156,13 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
     for(const auto& c : hull) infinite.push_back(graph.position(c));
   }
+  // the ranges are used within the full expressions that read them: CGAL 5.5 returns
+  // copyable parameters by value
   const std::vector<Point> no_points;
-  const auto& interior_points = choose_parameter(get_parameter_reference(np, Lex_optimal_chains::internal_np::interior_points), no_points);
-  const auto& exterior_points = choose_parameter(get_parameter_reference(np, Lex_optimal_chains::internal_np::exterior_points), no_points);
-  std::vector<std::uint32_t> sources = constraint_cells(dt, graph, interior_points, true);
-  std::vector<std::uint32_t> sinks = constraint_cells(dt, graph, exterior_points, false);
+  std::vector<std::uint32_t> sources = constraint_cells(
+    dt, graph, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::interior_points), no_points), true);
+  std::vector<std::uint32_t> sinks = constraint_cells(
+    dt, graph, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::exterior_points), no_points), false);
   sinks.insert(sinks.end(), infinite.begin(), infinite.end());
   std::sort(sinks.begin(), sinks.end());
   sinks.erase(std::unique(sinks.begin(), sinks.end()), sinks.end());

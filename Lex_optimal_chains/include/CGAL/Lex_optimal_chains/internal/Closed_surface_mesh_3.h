@@ -58,6 +58,18 @@ public:
     : facets_(facets)
   {
     const std::size_t nf = facets_.size();
+    // corners: the outward vertices of each facet, rotated to start at the lexicographically
+    // smallest point, so that the output does not depend on the vertex order in the cells
+    corners_.resize(3 * nf);
+    for(std::size_t k = 0; k < nf; ++k) {
+      const auto ov = outward_facet_vertices(facets_[k].second);
+      Vertex_handle v[3];
+      for(int i = 0; i < 3; ++i) v[i] = facets_[k].first->vertex(ov[i]);
+      int first = 0;
+      for(int i = 1; i < 3; ++i)
+        if(CGAL::compare_xyz(v[i]->point(), v[first]->point()) == SMALLER) first = i;
+      for(int i = 0; i < 3; ++i) corners_[3 * k + i] = v[(first + i) % 3];
+    }
     // facet lookup: (cell, index) -> position in `facets_`, by a sorted table
     lookup_.reserve(nf);
     for(std::size_t k = 0; k < nf; ++k)
@@ -182,11 +194,7 @@ private:
   }
 
   // DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
-  Vertex_handle vertex(std::uint32_t c) const
-  {
-    const Facet& f = facets_[c / 3];
-    return f.first->vertex(outward_facet_vertices(f.second)[c % 3]);
-  }
+  Vertex_handle vertex(std::uint32_t c) const { return corners_[c]; }
 
   // Half-edge 3k+e goes from outward vertex e to outward vertex e+1 of facet k. Its twin is
   // the boundary half-edge met first when turning around that edge through inside cells.
@@ -208,9 +216,8 @@ private:
       const Cell_handle next = cur->neighbor(q);
       if(!is_inside(next)) {
         const std::uint32_t k2 = position(cur, q);
-        const auto ov = outward_facet_vertices(q);
         for(int e2 = 0; e2 < 3; ++e2)
-          if(cur->vertex(ov[e2]) == v && cur->vertex(ov[(e2 + 1) % 3]) == u) return 3 * k2 + e2;
+          if(vertex(3 * k2 + e2) == v && vertex(3 * k2 + (e2 + 1) % 3) == u) return 3 * k2 + e2;
         CGAL_error_msg("inconsistent orientation around an edge");
       }
       behind = next->vertex(next->index(cur)); // the vertex of `next` facing away from `cur`
@@ -221,6 +228,7 @@ private:
   const std::vector<Facet>& facets_;
   std::vector<Lookup> lookup_;
   std::vector<std::uint32_t> twin_;
+  std::vector<Vertex_handle> corners_;
   std::vector<std::uint32_t> corner_vertex_;
   std::vector<Vertex_handle> copies_;
   Closed_surface_statistics stats_;

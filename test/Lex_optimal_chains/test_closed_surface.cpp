@@ -1,0 +1,253 @@
+// Closed surface reconstruction: samples of surfaces of known topology (sphere, torus, a
+// genus-2 mesh from CGAL's data sampled by PMP) give closed, valid, outward oriented meshes of
+// the right genus near the samples; identical output for shuffled input and 1 or 2 threads;
+// kitten.xyz gives one closed component; constraints; bad input gives the documented error.
+//   test_closed_surface [CGAL data directory]
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/IO/read_points.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Random.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/lex_optimal_closed_surface.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Vector = K::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using DT = CGAL::Delaunay_triangulation_3<K>;
+namespace LOC = CGAL::Lex_optimal_chains;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+CGAL::Random rng(2026);
+const double pi = 3.14159265358979323846;
+
+Vector noise(double s) { return Vector(rng.get_double(-s, s), rng.get_double(-s, s), rng.get_double(-s, s)); }
+
+std::vector<Point> sample_sphere(std::size_t n, const Point& c, double r, double eps)
+{
+  std::vector<Point> pts;
+  while(pts.size() < n) {
+    const Vector v(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
+    const double l = std::sqrt(v.squared_length());
+    if(l < 1e-3 || l > 1) continue;
+    pts.push_back(c + v * (r / l) + noise(eps));
+  }
+  return pts;
+}
+
+// uniform on the torus by rejection on the area element (R + r cos v)
+std::vector<Point> sample_torus(std::size_t n, double R, double r, double eps)
+{
+  std::vector<Point> pts;
+  while(pts.size() < n) {
+    const double u = rng.get_double(0, 2 * pi), v = rng.get_double(0, 2 * pi);
+    if(rng.get_double(0, R + r) > R + r * std::cos(v)) continue;
+    pts.push_back(Point((R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)) + noise(eps));
+  }
+  return pts;
+}
+
+long euler_genus(const Mesh& m)
+{
+  const long chi = long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
+  return (2 - chi) / 2;
+}
+
+std::string as_off(const Mesh& m)
+{
+  std::ostringstream out;
+  out.precision(17);
+  CGAL::IO::write_OFF(out, m);
+  return out.str();
+}
+
+// checks shared by all closed reconstructions
+void check_mesh(const Mesh& m, const LOC::Closed_surface_report& r, const std::vector<Point>& input)
+{
+  assert(CGAL::is_valid_polygon_mesh(m));
+  assert(CGAL::is_closed(m));
+  assert(CGAL::is_triangle_mesh(m));
+  assert(r.mesh_faces == num_faces(m) && r.mesh_vertices == num_vertices(m));
+  assert(PMP::is_outward_oriented(m));
+  // interpolating: every vertex is an input point
+  std::set<Point> in(input.begin(), input.end());
+  for(auto v : vertices(m)) assert(in.count(m.point(v)) == 1);
+}
+
+template <class Points, class NP = CGAL::parameters::Default_named_parameters>
+LOC::Closed_surface_report reconstruct(const Points& pts, Mesh& m, const NP& np = CGAL::parameters::default_values())
+{
+  m.clear();
+  return CGAL::lex_optimal_closed_surface_reconstruction(pts, m, np);
+}
+
+template <class F>
+void expect_error(LOC::Input_error_code code, const F& f)
+{
+  try {
+    f();
+  } catch(const LOC::Input_error& e) {
+    std::cout << "  expected error: " << e.what() << "\n";
+    assert(e.code() == code);
+    return;
+  }
+  assert(!"an Input_error was expected");
+}
+
+int main(int argc, char** argv)
+{
+  std::cout << std::unitbuf;
+  const std::string data = argc > 1 ? argv[1] : "";
+  Mesh m;
+
+  // --- sphere, noisy, automatic interior -------------------------------------------------------
+  {
+    const std::vector<Point> pts = sample_sphere(20000, Point(0.3, -0.2, 0.1), 1.0, 0.002);
+    const LOC::Closed_surface_report r = reconstruct(pts, m);
+    check_mesh(m, r, pts);
+    assert(r.automatic_interior && r.components == 1 && r.genus == 0 && euler_genus(m) == 0);
+    for(auto f : faces(m)) { // the faces lie on the sphere, up to the noise and the chord
+      Point c = CGAL::centroid(m.point(target(halfedge(f, m), m)), m.point(target(next(halfedge(f, m), m), m)),
+                               m.point(source(halfedge(f, m), m)));
+      assert(std::abs(std::sqrt(CGAL::squared_distance(c, Point(0.3, -0.2, 0.1))) - 1.0) < 0.02);
+    }
+    std::cout << "sphere: " << r.mesh_faces << " faces, persistence " << r.interior_persistence
+              << ", non-manifold vertices/edges " << r.non_manifold_vertices << "/" << r.non_manifold_edges << "\n";
+
+    // shuffled input and a different number of threads give the same mesh
+    std::vector<Point> shuffled = pts;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(3));
+    Mesh m2, m3;
+    reconstruct(shuffled, m2);
+    assert(as_off(m) == as_off(m2));
+    reconstruct(shuffled, m3, LOC::parameters::number_of_threads(2u));
+    assert(as_off(m) == as_off(m3));
+
+    // the facet function on a user's triangulation, with an explicit interior point
+    DT dt(pts.begin(), pts.end());
+    std::vector<DT::Facet> facets;
+    const LOC::Closed_surface_report rf = CGAL::lex_optimal_closed_surface(
+      dt, std::back_inserter(facets), LOC::parameters::interior_points(std::vector<Point>{Point(0.3, -0.2, 0.1)}));
+    assert(!rf.automatic_interior && facets.size() == r.mesh_faces);
+    for(const DT::Facet& f : facets) {
+      const int i = f.second;
+      const auto ov = LOC::internal::outward_facet_vertices(i);
+      assert(!dt.is_infinite(f.first));
+      assert(CGAL::orientation(f.first->vertex(ov[0])->point(), f.first->vertex(ov[1])->point(),
+                               f.first->vertex(ov[2])->point(), f.first->vertex(i)->point()) == CGAL::NEGATIVE);
+    }
+  }
+
+  // --- torus: genus 1 ----------------------------------------------------------------------------
+  {
+    const std::vector<Point> pts = sample_torus(30000, 1.0, 0.35, 0.001);
+    const LOC::Closed_surface_report r = reconstruct(pts, m);
+    check_mesh(m, r, pts);
+    std::cout << "torus: " << r.mesh_faces << " faces, " << r.components << " component(s), genus " << r.genus << "\n";
+    assert(r.components == 1 && r.genus == 1 && euler_genus(m) == 1);
+  }
+
+  // --- two spheres: one interior point per sphere gives two components; one gives one ------------
+  {
+    std::vector<Point> pts = sample_sphere(6000, Point(0, 0, 0), 1.0, 0.001);
+    const std::vector<Point> b = sample_sphere(6000, Point(3, 0, 0), 1.0, 0.001);
+    pts.insert(pts.end(), b.begin(), b.end());
+    LOC::Closed_surface_report r = reconstruct(pts, m, LOC::parameters::interior_points(std::vector<Point>{Point(0, 0, 0), Point(3, 0, 0)}));
+    check_mesh(m, r, pts);
+    assert(r.components == 2 && r.genus == 0);
+    r = reconstruct(pts, m, LOC::parameters::interior_points(std::vector<Point>{Point(3, 0, 0)}));
+    check_mesh(m, r, pts);
+    assert(r.components == 1);
+    for(auto v : vertices(m)) assert(m.point(v).x() > 1.5);
+    // an exterior point inside the first sphere, interior in the second: the same
+    Mesh m2;
+    reconstruct(pts, m2, LOC::parameters::interior_points(std::vector<Point>{Point(3, 0, 0)},
+                         LOC::parameters::exterior_points(std::vector<Point>{Point(0, 0, 0)})));
+    assert(as_off(m) == as_off(m2));
+  }
+
+  // --- a genus-2 mesh from CGAL's data, sampled by PMP ----------------------------------------------
+  if(!data.empty()) {
+    Mesh source;
+    const bool ok = CGAL::IO::read_polygon_mesh(data + "/meshes/double-torus-example.off", source);
+    assert(ok && CGAL::is_closed(source));
+    PMP::triangulate_faces(source); // the file has quadrangles
+    std::vector<Point> pts;
+    PMP::sample_triangle_mesh(source, std::back_inserter(pts),
+                              CGAL::parameters::number_of_points_on_faces(40000).do_sample_vertices(false).do_sample_edges(false).random_seed(1));
+    const LOC::Closed_surface_report r = reconstruct(pts, m);
+    check_mesh(m, r, pts);
+    const double d = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(m, source, CGAL::parameters::number_of_points_per_area_unit(200));
+    CGAL::Bbox_3 box = PMP::bbox(source);
+    const double diag = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) + CGAL::square(box.zmax() - box.zmin()));
+    std::cout << "double torus: genus " << r.genus << " (source " << euler_genus(source) << "), "
+              << r.components << " component(s), Hausdorff " << d / diag << " x diagonal\n";
+    assert(r.components == 1 && r.genus == euler_genus(source) && r.genus == 2);
+    assert(d < 0.01 * diag);
+
+    // kitten.xyz, a real scan: one closed component
+    std::vector<Point> kitten;
+    const bool read = CGAL::IO::read_points(data + "/points_3/kitten.xyz", std::back_inserter(kitten));
+    assert(read && kitten.size() > 1000);
+    const LOC::Closed_surface_report rk = reconstruct(kitten, m);
+    check_mesh(m, rk, kitten);
+    std::cout << "kitten: " << rk.mesh_faces << " faces, " << rk.components << " component(s), genus " << rk.genus << "\n";
+    assert(rk.components == 1);
+  } else {
+    std::cout << "no data directory given: the genus-2 and kitten checks are skipped\n";
+  }
+
+  // --- bad input: typed errors, the mesh is left as it was --------------------------------------------
+  {
+    Mesh kept;
+    const std::vector<Point> tet{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+    auto run = [&](const std::vector<Point>& pts, auto np) {
+      const std::size_t before = num_faces(kept);
+      try { CGAL::lex_optimal_closed_surface_reconstruction(pts, kept, np); }
+      catch(...) { assert(num_faces(kept) == before); throw; }
+    };
+    const auto none = CGAL::parameters::default_values();
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    expect_error(LOC::Input_error_code::EMPTY_INPUT, [&] { run({}, none); });
+    expect_error(LOC::Input_error_code::TOO_FEW_POINTS, [&] { run({tet[0], tet[1], tet[2]}, none); });
+    expect_error(LOC::Input_error_code::TOO_FEW_POINTS, [&] { run(std::vector<Point>(50, Point(1, 2, 3)), none); });
+    std::vector<Point> plane;
+    for(int i = 0; i < 100; ++i) plane.emplace_back(rng.get_double(), rng.get_double(), 0);
+    expect_error(LOC::Input_error_code::DEGENERATE_POINT_SET, [&] { run(plane, none); });
+    expect_error(LOC::Input_error_code::NON_FINITE_COORDINATE, [&] { run({tet[0], tet[1], Point(nan, 0, 0), tet[3]}, none); });
+    expect_error(LOC::Input_error_code::NON_FINITE_COORDINATE, [&] { run({tet[0], tet[1], Point(0, inf, 0), tet[3]}, none); });
+    const std::vector<Point> sphere = sample_sphere(3000, Point(0, 0, 0), 1, 0.001);
+    expect_error(LOC::Input_error_code::CONSTRAINT_OUTSIDE_HULL,
+                 [&] { run(sphere, LOC::parameters::interior_points(std::vector<Point>{Point(5, 0, 0)})); });
+    expect_error(LOC::Input_error_code::NON_FINITE_COORDINATE,
+                 [&] { run(sphere, LOC::parameters::interior_points(std::vector<Point>{Point(0, 0, nan)})); });
+    expect_error(LOC::Input_error_code::CONFLICTING_CONSTRAINTS,
+                 [&] { run(sphere, LOC::parameters::interior_points(std::vector<Point>{Point(0, 0, 0)},
+                                   LOC::parameters::exterior_points(std::vector<Point>{Point(0, 0, 0)}))); });
+    expect_error(LOC::Input_error_code::CANCELLED,
+                 [&] { run(sphere, LOC::parameters::callback(std::function<bool(double)>([](double x) { return x < 0.5; }))); });
+    // an open surface (a spherical cap) has no persistent interior
+    std::vector<Point> cap;
+    for(const Point& p : sample_sphere(8000, Point(0, 0, 0), 1, 0.0005)) if(p.z() > 0.3) cap.push_back(p);
+    expect_error(LOC::Input_error_code::NO_INTERIOR_FOUND, [&] { run(cap, none); });
+    assert(num_faces(kept) == 0);
+  }
+  std::cout << "all closed surface checks passed\n";
+  return 0;
+}

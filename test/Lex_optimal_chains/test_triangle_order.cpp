@@ -1,0 +1,196 @@
+// The order of Lemma 4.14 against an exact oracle built from CGAL's exact kernel, on random
+// triangles, constructed near-ties, exact ties and degenerate shapes; the certified bound of
+// the fast key; and the sort of the dual graph of Delaunay triangulations with many ties.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Lex_optimal_chains_traits_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
+#include <CGAL/Random.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using Point = K::Point_3;
+using Triangle = std::array<Point, 3>;
+namespace LI = CGAL::Lex_optimal_chains::internal;
+
+// ---- oracle: CGAL's exact kernel, with its own angle predicate and squared radius ------------
+EK::Point_3 to_exact(const Point& p) { return EK::Point_3(p.x(), p.y(), p.z()); }
+
+struct Exact_radii { EK::FT rb2, rc2; bool degenerate; };
+
+Exact_radii oracle_radii(const Triangle& t)
+{
+  const EK::Point_3 p = to_exact(t[0]), q = to_exact(t[1]), r = to_exact(t[2]);
+  Exact_radii res;
+  res.degenerate = CGAL::collinear(p, q, r);
+  res.rc2 = res.degenerate ? EK::FT(0) : CGAL::squared_radius(p, q, r);
+  // an angle of the triangle is obtuse: the smallest enclosing ball has the opposite edge as diameter
+  if(CGAL::angle(q, p, r) == CGAL::OBTUSE)      res.rb2 = CGAL::squared_distance(q, r) / 4;
+  else if(CGAL::angle(p, q, r) == CGAL::OBTUSE) res.rb2 = CGAL::squared_distance(p, r) / 4;
+  else if(CGAL::angle(p, r, q) == CGAL::OBTUSE) res.rb2 = CGAL::squared_distance(p, q) / 4;
+  else res.rb2 = res.rc2;
+  return res;
+}
+
+CGAL::Comparison_result oracle_compare(const Triangle& a, const Triangle& b)
+{
+  const Exact_radii x = oracle_radii(a), y = oracle_radii(b);
+  if(x.rb2 != y.rb2) return x.rb2 < y.rb2 ? CGAL::SMALLER : CGAL::LARGER;
+  if(x.degenerate != y.degenerate) return x.degenerate ? CGAL::SMALLER : CGAL::LARGER; // R_C infinite first
+  if(!x.degenerate && x.rc2 != y.rc2) return x.rc2 > y.rc2 ? CGAL::SMALLER : CGAL::LARGER;
+  // tie-break: sorted vertex triples, lexicographically
+  std::array<std::array<double, 3>, 3> s, u;
+  for(int i = 0; i < 3; ++i) {
+    s[i] = {{a[i].x(), a[i].y(), a[i].z()}};
+    u[i] = {{b[i].x(), b[i].y(), b[i].z()}};
+  }
+  std::sort(s.begin(), s.end());
+  std::sort(u.begin(), u.end());
+  return s < u ? CGAL::SMALLER : (u < s ? CGAL::LARGER : CGAL::EQUAL);
+}
+
+// ---- helpers ---------------------------------------------------------------------------------
+CGAL::Random rng(12345);
+Point random_point(double s = 1) { return Point(rng.get_double(-s, s), rng.get_double(-s, s), rng.get_double(-s, s)); }
+Triangle random_triangle() { return Triangle{{random_point(), random_point(), random_point()}}; }
+
+Point nudge(const Point& p, int ulps)
+{
+  double x = p.x();
+  for(int i = 0; i < std::abs(ulps); ++i) x = std::nextafter(x, ulps > 0 ? 2.0 : -2.0);
+  return Point(x, p.y(), p.z());
+}
+
+const CGAL::Lex_optimal_chains_traits_3<K> traits;
+const auto compare_order = traits.compare_triangle_order_3_object();
+
+CGAL::Comparison_result ours(const Triangle& a, const Triangle& b)
+{
+  return compare_order(a[0], a[1], a[2], b[0], b[1], b[2]);
+}
+
+int checked = 0;
+void check(const Triangle& a, const Triangle& b)
+{
+  const CGAL::Comparison_result expected = oracle_compare(a, b);
+  const CGAL::Comparison_result got = ours(a, b);
+  if(got != expected) {
+    std::cerr << "MISMATCH\n" << a[0] << " | " << a[1] << " | " << a[2] << "\n"
+              << b[0] << " | " << b[1] << " | " << b[2] << "\n got " << int(got) << " expected " << int(expected) << "\n";
+  }
+  assert(got == expected);
+  // antisymmetry and invariance under the order of the vertices
+  assert(ours(b, a) == -expected);
+  assert(ours(Triangle{{a[2], a[0], a[1]}}, Triangle{{b[1], b[0], b[2]}}) == expected);
+  ++checked;
+}
+
+void check_fast_key(const Triangle& t)
+{
+  LI::Triangle_coordinates_3 c;
+  for(int i = 0; i < 3; ++i) c[i] = {{t[i].x(), t[i].y(), t[i].z()}};
+  double rb2, err;
+  if(!LI::approximate_squared_rb(c, 1.0 / (1ull << 36), rb2, err)) return;
+  const EK::FT exact = oracle_radii(t).rb2;
+  // |exact - rb2| <= err * rb2
+  const EK::FT diff = exact - EK::FT(rb2);
+  assert(CGAL::abs(diff) <= EK::FT(err) * EK::FT(rb2));
+}
+
+int main()
+{
+  // 1. random triangles
+  for(int i = 0; i < 2000; ++i) {
+    const Triangle a = random_triangle(), b = random_triangle();
+    check(a, b);
+    check_fast_key(a);
+  }
+
+  // 2. obtuse triangles sharing their longest edge: equal R_B, order by R_C reversed
+  for(int i = 0; i < 300; ++i) {
+    const Point p = random_point(), q = random_point();
+    const Point m = CGAL::midpoint(p, q);
+    auto apex = [&]() { return m + (random_point(0.05) - CGAL::ORIGIN); };
+    const Triangle a{{p, q, apex()}}, b{{q, apex(), p}};
+    check(a, b);
+    check_fast_key(a);
+  }
+
+  // 3. near ties: a triangle and its copy with one coordinate moved by a few ulps
+  for(int i = 0; i < 300; ++i) {
+    const Triangle a = random_triangle();
+    for(int u : {-2, -1, 1, 2}) {
+      const Triangle b{{nudge(a[0], u), a[1], a[2]}};
+      check(a, b);
+      check_fast_key(b);
+    }
+  }
+
+  // 4. exact ties: co-spherical and congruent triangles on an integer grid (both radii equal)
+  for(int i = 0; i < 300; ++i) {
+    auto g = [&]() { return Point(rng.get_int(0, 4), rng.get_int(0, 4), rng.get_int(0, 4)); };
+    Triangle a{{g(), g(), g()}}, b{{g(), g(), g()}};
+    if(CGAL::collinear(a[0], a[1], a[2]) && a[0] != a[1] && a[1] != a[2] && a[0] != a[2]) {
+      check(a, b); // degenerate but distinct points: infinite circumradius
+      continue;
+    }
+    if(a[0] == a[1] || a[1] == a[2] || a[0] == a[2] || b[0] == b[1] || b[1] == b[2] || b[0] == b[2]) continue;
+    if(CGAL::collinear(b[0], b[1], b[2])) continue;
+    check(a, b);
+    const K::Vector_3 shift(rng.get_int(-3, 3), rng.get_int(-3, 3), rng.get_int(-3, 3));
+    check(a, Triangle{{a[0] + shift, a[1] + shift, a[2] + shift}}); // congruent: exact tie of both radii
+  }
+
+  // 5. right triangles and nearly right ones (the obtuse test is undecidable in double)
+  for(int i = 0; i < 300; ++i) {
+    const double x = rng.get_int(1, 100), y = rng.get_int(1, 100);
+    const Triangle right{{Point(0, 0, 0), Point(x, 0, 0), Point(0, y, 0)}};
+    const Triangle near{{Point(0, 0, 0), nudge(Point(x, 0, 0), rng.get_int(-2, 3)), Point(0, y, 0)}};
+    const Triangle acute{{Point(0, 0, 0), Point(x, 0, 0), Point(x / 2, std::sqrt(x * x + y * y) / 2, 0)}};
+    check(right, near);
+    check(right, acute);
+    check_fast_key(near);
+  }
+
+  // 6. needles and flat triangles
+  for(int i = 0; i < 300; ++i) {
+    const Point p = random_point(), q = random_point();
+    const double t = rng.get_double(-0.5, 1.5);
+    const Point on_line = p + t * (q - p);
+    const Triangle flat{{p, q, nudge(on_line, rng.get_int(-3, 4))}};
+    const Triangle needle{{p, nudge(p, 1 + rng.get_int(0, 3)), q}};
+    check(flat, needle);
+    check(flat, random_triangle());
+    check_fast_key(flat);
+    check_fast_key(needle);
+  }
+  std::cout << checked << " comparisons agree with the exact oracle\n";
+
+  // 7. the dual graph of Delaunay triangulations of grids (massive exact ties) is sorted exactly
+  for(int trial = 0; trial < 3; ++trial) {
+    std::vector<Point> pts;
+    for(int x = 0; x < 7; ++x)
+      for(int y = 0; y < 7; ++y)
+        for(int z = 0; z < 4; ++z)
+          if(trial == 0 || rng.get_double() < 0.7)
+            pts.emplace_back(x * (trial == 2 ? 0.1 : 1.0), y * (trial == 2 ? 0.1 : 1.0), z * 0.7);
+    CGAL::Delaunay_triangulation_3<K> dt(pts.begin(), pts.end());
+    LI::Sorted_dual_graph_3<CGAL::Delaunay_triangulation_3<K>> graph(dt, [](double) { return true; });
+    const auto& rec = graph.records();
+    assert(rec.size() == std::size_t(std::distance(dt.finite_facets_begin(), dt.finite_facets_end())));
+    for(std::size_t i = 1; i < rec.size(); ++i) {
+      const auto a = graph.coordinates(rec[i - 1]), b = graph.coordinates(rec[i]);
+      assert(LI::compare_triangle_order(a, b) == CGAL::SMALLER);
+    }
+    std::cout << "grid " << trial << ": " << rec.size() << " triangles sorted, "
+              << graph.number_of_repaired_records() << " placed by the exact comparator\n";
+  }
+  return 0;
+}
