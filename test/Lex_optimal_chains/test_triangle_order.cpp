@@ -190,7 +190,7 @@ int main()
       assert(LI::compare_triangle_order(a, b) == CGAL::SMALLER);
     }
     std::cout << "grid " << trial << ": " << rec.size() << " triangles sorted, "
-              << graph.number_of_repaired_records() << " placed by the exact comparator\n";
+              << graph.number_of_records_in_runs() << " in close runs, " << graph.number_of_exactly_sorted_records() << " placed by the exact comparator\n";
   }
   return 0;
 }

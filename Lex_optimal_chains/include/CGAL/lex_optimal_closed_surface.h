@@ -45,7 +45,8 @@ struct Closed_surface_report
   std::size_t number_of_input_points = 0;      ///< points given (reconstruction only)
   std::size_t number_of_vertices = 0;          ///< vertices of the triangulation
   std::size_t number_of_triangles = 0;         ///< finite facets of the triangulation (dual edges)
-  std::size_t number_of_exactly_ordered_triangles = 0; ///< triangles the fast sort handed to the exact comparator
+  std::size_t number_of_triangles_in_close_runs = 0;  ///< triangles whose fast keys were too close to be ordered by them
+  std::size_t number_of_exactly_ordered_triangles = 0; ///< of those, triangles ordered by the exact comparator
   std::size_t number_of_facets = 0;            ///< facets of the optimal 2-cycle
   bool automatic_interior = false;             ///< true if the interior cell was chosen automatically
   double interior_persistence = 0;             ///< persistence ratio of the automatic interior
@@ -144,11 +145,14 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   Sorted_dual_graph_3<Triangulation> graph(dt, Stage_progress{&callback, progress_from, progress_from + 0.6 * span});
   report.number_of_vertices = dt.number_of_vertices();
   report.number_of_triangles = graph.records().size();
-  report.number_of_exactly_ordered_triangles = graph.number_of_repaired_records();
+  report.number_of_exactly_ordered_triangles = graph.number_of_exactly_sorted_records();
+  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
   report.order_seconds = watch.lap();
   if(verbose)
     std::cerr << "Lex_optimal_chains: ordered " << graph.records().size() << " triangles ("
-              << graph.number_of_repaired_records() << " exactly) in " << report.order_seconds << " s\n";
+              << graph.number_of_records_in_runs() << " in close runs, " << graph.number_of_exactly_sorted_records() << " exactly) in " << report.order_seconds << " s (keys "
+              << graph.key_seconds() << " s, radix sort " << graph.sort_seconds() << " s, exact runs "
+              << graph.repair_seconds() << " s)\n";
 
   std::vector<std::uint32_t> infinite;
   {
@@ -202,17 +206,8 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   report.cut_seconds = watch.lap();
   if(verbose)
     std::cerr << "Lex_optimal_chains: cut " << facets.size() << " facets in " << report.cut_seconds << " s\n";
-  // `inside` is indexed by graph position: translate to a per-cell predicate for the caller
   return facets;
 }
-
-template <class Triangulation>
-struct Inside_predicate
-{
-  const Handle_index_map<typename Triangulation::Cell>* map;
-  const std::vector<bool>* inside;
-  bool operator()(typename Triangulation::Cell_handle c) const { return (*inside)[map->index(&*c)]; }
-};
 
 } // namespace internal
 } // namespace Lex_optimal_chains
@@ -299,7 +294,7 @@ void reconstruct_in(Triangulation& dt, PolygonMesh& mesh, const NamedParameters&
   // map cells to the positions used by `inside`
   const Handle_index_map<typename Triangulation::Cell> positions(dt.tds().cells().begin(), dt.tds().cells().end());
   watch.lap();
-  Closed_surface_mesh_3<Triangulation> surface(dt, facets, Inside_predicate<Triangulation>{&positions, &inside});
+  Closed_surface_mesh_3<Triangulation> surface(facets, positions, inside);
   surface.build(mesh, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh)));
   const Closed_surface_statistics& s = surface.statistics();
   report.mesh_vertices = s.vertices;

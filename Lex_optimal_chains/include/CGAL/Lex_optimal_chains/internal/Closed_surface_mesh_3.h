@@ -52,12 +52,30 @@ public:
   using Facet = typename Triangulation::Facet;
   using Vertex = typename Triangulation::Vertex;
 
-  // `facets`: the boundary facets, each given by its inside cell; `is_inside(c)`.
-  template <class IsInside>
-  Closed_surface_mesh_3(const Triangulation& dt, const std::vector<Facet>& facets, const IsInside& is_inside)
-    : facets_(facets)
+  using Cell = typename Triangulation::Cell;
+
+  // `facets`: the boundary facets, each given by its inside cell; `cells` numbers the cells
+  // and `inside[cells.index(c)]` tells if a cell is inside.
+  Closed_surface_mesh_3(const std::vector<Facet>& facets, const Handle_index_map<Cell>& cells,
+                        const std::vector<bool>& inside)
+    : cells_(cells), inside_(inside)
   {
-    const std::size_t nf = facets_.size();
+    const std::size_t nf = facets.size();
+    // Internally the facets are kept in the order of their cells in memory, so that turning
+    // around edges reads nearby entries; `by_rank_` keeps the given (canonical) order for the
+    // numbering of the output.
+    {
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> order(nf);
+      for(std::size_t k = 0; k < nf; ++k)
+        order[k] = std::make_pair(facet_key(facets[k].first, facets[k].second), std::uint32_t(k));
+      std::sort(order.begin(), order.end());
+      facets_.resize(nf);
+      by_rank_.resize(nf);
+      for(std::size_t k = 0; k < nf; ++k) {
+        facets_[k] = facets[order[k].second];
+        by_rank_[order[k].second] = std::uint32_t(k);
+      }
+    }
     // corners: the outward vertices of each facet, rotated to start at the lexicographically
     // smallest point, so that the output does not depend on the vertex order in the cells
     corners_.resize(3 * nf);
@@ -70,16 +88,22 @@ public:
         if(CGAL::compare_xyz(v[i]->point(), v[first]->point()) == SMALLER) first = i;
       for(int i = 0; i < 3; ++i) corners_[3 * k + i] = v[(first + i) % 3];
     }
-    // facet lookup: (cell, index) -> position in `facets_`, by a sorted table
-    lookup_.reserve(nf);
-    for(std::size_t k = 0; k < nf; ++k)
-      lookup_.push_back(Lookup{&*facets_[k].first, std::uint32_t(facets_[k].second), std::uint32_t(k)});
-    std::sort(lookup_.begin(), lookup_.end());
+    // facet lookup: (cell position, index) -> position in `facets_`, by open addressing with
+    // a monotone hash (keys are spread evenly over [0, 4 * cells), and locality is kept)
+    std::size_t slots = 16;
+    while(slots < 2 * nf) slots *= 2;
+    table_.assign(slots, Slot{empty_key, 0});
+    for(std::size_t k = 0; k < nf; ++k) {
+      const std::uint32_t key = facet_key(facets_[k].first, facets_[k].second);
+      std::size_t h = hash(key);
+      while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
+      table_[h] = Slot{key, std::uint32_t(k)};
+    }
 
     twin_.assign(3 * nf, 0);
     for(std::size_t k = 0; k < nf; ++k)
       for(int e = 0; e < 3; ++e)
-        twin_[3 * k + e] = find_twin(k, e, is_inside);
+        twin_[3 * k + e] = find_twin(k, e);
 
     // umbrellas: corners (k, i) around a vertex linked through twins
     Union_find corners(3 * nf);
@@ -89,16 +113,18 @@ public:
         const std::uint32_t ko = o / 3, eo = o % 3;
         corners.unite(h, 3 * ko + (eo + 1) % 3); // source of h = target of its twin
       }
+    // one vertex copy per umbrella, numbered in the canonical order of the facets
     corner_vertex_.assign(3 * nf, 0);
     std::vector<std::uint32_t> copy_of_root(3 * nf, UINT32_MAX);
-    for(std::uint32_t c = 0; c < 3 * nf; ++c) {
-      const std::uint32_t r = corners.find(c);
-      if(copy_of_root[r] == UINT32_MAX) {
-        copy_of_root[r] = std::uint32_t(copies_.size());
-        copies_.push_back(vertex(c));
+    for(std::uint32_t rank = 0; rank < nf; ++rank)
+      for(std::uint32_t c = 3 * by_rank_[rank]; c < 3 * by_rank_[rank] + 3; ++c) {
+        const std::uint32_t r = corners.find(c);
+        if(copy_of_root[r] == UINT32_MAX) {
+          copy_of_root[r] = std::uint32_t(copies_.size());
+          copies_.push_back(vertex(c));
+        }
+        corner_vertex_[c] = copy_of_root[r];
       }
-      corner_vertex_[c] = copy_of_root[r];
-    }
 
     // statistics
     stats_.vertices = copies_.size();
@@ -109,13 +135,26 @@ public:
     for(std::size_t i = 1; i < copied.size(); ++i)
       if(copied[i] == copied[i - 1] && (i < 2 || copied[i - 2] != copied[i])) ++stats_.non_manifold_vertices;
 
-    std::vector<std::pair<const Vertex*, const Vertex*>> edges;
+    // an edge of the triangulation split in several mesh edges joins the same two copies'
+    // originals twice or more; copies are numbered, so an edge is a pair of 32-bit numbers
+    std::vector<std::uint32_t> original(copies_.size());
+    {
+      std::vector<std::pair<const Vertex*, std::uint32_t>> order(copies_.size());
+      for(std::uint32_t i = 0; i < copies_.size(); ++i) order[i] = std::make_pair(&*copies_[i], i);
+      std::sort(order.begin(), order.end());
+      std::uint32_t id = 0;
+      for(std::size_t i = 0; i < order.size(); ++i) {
+        if(i > 0 && order[i].first != order[i - 1].first) ++id;
+        original[order[i].second] = id;
+      }
+    }
+    std::vector<std::uint64_t> edges;
     edges.reserve(3 * nf / 2);
     for(std::uint32_t h = 0; h < 3 * nf; ++h)
       if(h < twin_[h]) {
-        const Vertex* a = &*vertex(h);
-        const Vertex* b = &*vertex(3 * (h / 3) + (h % 3 + 1) % 3);
-        edges.emplace_back((std::min)(a, b), (std::max)(a, b));
+        const std::uint64_t a = original[corner_vertex_[h]];
+        const std::uint64_t b = original[corner_vertex_[3 * (h / 3) + (h % 3 + 1) % 3]];
+        edges.push_back(((std::min)(a, b) << 32) | (std::max)(a, b));
       }
     std::sort(edges.begin(), edges.end());
     for(std::size_t i = 1; i < edges.size(); ++i)
@@ -152,19 +191,25 @@ public:
       vd[i] = add_vertex(mesh);
       put(vpm, vd[i], copies_[i]->point());
     }
+    // edges and faces are created in the canonical order of the facets
     std::vector<halfedge_descriptor> hd(twin_.size());
-    for(std::uint32_t h = 0; h < twin_.size(); ++h) {
-      if(h > twin_[h]) continue;
-      const halfedge_descriptor a = halfedge(add_edge(mesh), mesh);
-      hd[h] = a;
-      hd[twin_[h]] = opposite(a, mesh);
-    }
-    for(std::uint32_t h = 0; h < twin_.size(); ++h) {
-      const std::uint32_t target_corner = 3 * (h / 3) + (h % 3 + 1) % 3;
-      set_target(hd[h], vd[corner_vertex_[target_corner]], mesh);
-      set_halfedge(vd[corner_vertex_[target_corner]], hd[h], mesh);
-    }
-    for(std::uint32_t k = 0; 3 * k < twin_.size(); ++k) {
+    std::vector<bool> created(twin_.size(), false);
+    for(std::uint32_t rank = 0; rank < by_rank_.size(); ++rank)
+      for(std::uint32_t h = 3 * by_rank_[rank]; h < 3 * by_rank_[rank] + 3; ++h) {
+        if(created[h]) continue;
+        const halfedge_descriptor a = halfedge(add_edge(mesh), mesh);
+        hd[h] = a;
+        hd[twin_[h]] = opposite(a, mesh);
+        created[h] = created[twin_[h]] = true;
+      }
+    for(std::uint32_t rank = by_rank_.size(); rank-- > 0;)
+      for(std::uint32_t h = 3 * by_rank_[rank]; h < 3 * by_rank_[rank] + 3; ++h) {
+        const std::uint32_t target_corner = 3 * (h / 3) + (h % 3 + 1) % 3;
+        set_target(hd[h], vd[corner_vertex_[target_corner]], mesh);
+        set_halfedge(vd[corner_vertex_[target_corner]], hd[h], mesh); // the last one set wins
+      }
+    for(std::uint32_t rank = 0; rank < by_rank_.size(); ++rank) {
+      const std::uint32_t k = by_rank_[rank];
       const face_descriptor f = add_face(mesh);
       for(int e = 0; e < 3; ++e) {
         set_next(hd[3 * k + e], hd[3 * k + (e + 1) % 3], mesh);
@@ -175,31 +220,34 @@ public:
   }
 
 private:
-  struct Lookup
+  struct Slot { std::uint32_t key, position; };
+  static constexpr std::uint32_t empty_key = UINT32_MAX;
+
+  std::uint32_t facet_key(Cell_handle c, int i) const { return (cells_.index(&*c) << 2) | std::uint32_t(i); }
+  std::size_t hash(std::uint32_t key) const
   {
-    const typename Triangulation::Cell* cell;
-    std::uint32_t index, position;
-    bool operator<(const Lookup& o) const
-    {
-      return std::less<const void*>()(cell, o.cell) || (cell == o.cell && index < o.index);
-    }
-  };
+    return std::size_t(std::uint64_t(key) * table_.size() / (4 * std::uint64_t(cells_.size())));
+  }
 
   std::uint32_t position(Cell_handle c, int i) const
   {
-    const Lookup key{&*c, std::uint32_t(i), 0};
-    auto it = std::lower_bound(lookup_.begin(), lookup_.end(), key);
-    CGAL_assertion(it != lookup_.end() && it->cell == &*c && it->index == std::uint32_t(i));
-    return it->position;
+    const std::uint32_t key = facet_key(c, i);
+    std::size_t h = hash(key);
+    while(table_[h].key != key) {
+      CGAL_assertion(table_[h].key != empty_key);
+      h = (h + 1) & (table_.size() - 1);
+    }
+    return table_[h].position;
   }
+
+  bool is_inside(Cell_handle c) const { return inside_[cells_.index(&*c)]; }
 
   // DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
   Vertex_handle vertex(std::uint32_t c) const { return corners_[c]; }
 
   // Half-edge 3k+e goes from outward vertex e to outward vertex e+1 of facet k. Its twin is
   // the boundary half-edge met first when turning around that edge through inside cells.
-  template <class IsInside>
-  std::uint32_t find_twin(std::size_t k, int e, const IsInside& is_inside) const
+  std::uint32_t find_twin(std::size_t k, int e) const
   {
     const Vertex_handle u = vertex(std::uint32_t(3 * k + e));
     const Vertex_handle v = vertex(std::uint32_t(3 * k + (e + 1) % 3));
@@ -225,8 +273,11 @@ private:
     }
   }
 
-  const std::vector<Facet>& facets_;
-  std::vector<Lookup> lookup_;
+  std::vector<Facet> facets_;       // in the order of their cells in memory
+  std::vector<std::uint32_t> by_rank_; // canonical rank -> index in `facets_`
+  const Handle_index_map<Cell>& cells_;
+  const std::vector<bool>& inside_;
+  std::vector<Slot> table_;
   std::vector<std::uint32_t> twin_;
   std::vector<Vertex_handle> corners_;
   std::vector<std::uint32_t> corner_vertex_;

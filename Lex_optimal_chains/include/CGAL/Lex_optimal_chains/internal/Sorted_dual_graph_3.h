@@ -27,6 +27,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -52,7 +53,10 @@ inline std::uint64_t double_bits(double d)
   return b;
 }
 
-inline void radix_sort_records(Dual_edge_record* begin, Dual_edge_record* end, int shift, int lowest_shift)
+// In-place MSD radix sort (American flag sort) on the bits [lowest_shift, shift + width) of
+// the keys, then insertion sort on the full key in small buckets.
+inline void radix_sort_records(Dual_edge_record* begin, Dual_edge_record* end, int shift, int lowest_shift,
+                               int width = 8)
 {
   const std::size_t n = std::size_t(end - begin);
   if(n < 48 || shift < lowest_shift) {
@@ -65,30 +69,39 @@ inline void radix_sort_records(Dual_edge_record* begin, Dual_edge_record* end, i
     }
     return;
   }
-  std::size_t count[256] = {0};
-  for(Dual_edge_record* p = begin; p < end; ++p) ++count[(p->key >> shift) & 0xff];
-  if(std::find(std::begin(count), std::end(count), n) != std::end(count)) {
+  if(shift < lowest_shift) shift = lowest_shift;
+  const std::size_t buckets = std::size_t(1) << width;
+  const std::uint64_t mask = buckets - 1;
+  std::size_t small[3][256];
+  std::vector<std::size_t> large;
+  std::size_t *count = small[0], *head = small[1], *tail = small[2];
+  if(buckets > 256) {
+    large.resize(3 * buckets);
+    count = large.data(); head = count + buckets; tail = head + buckets;
+  }
+  std::fill(count, count + buckets, std::size_t(0));
+  for(Dual_edge_record* p = begin; p < end; ++p) ++count[(p->key >> shift) & mask];
+  if(std::find(count, count + buckets, n) != count + buckets) {
     radix_sort_records(begin, end, shift - 8, lowest_shift); // one bucket: next digit
     return;
   }
-  std::size_t head[256], tail[256];
   std::size_t sum = 0;
-  for(int d = 0; d < 256; ++d) { head[d] = sum; sum += count[d]; tail[d] = sum; }
-  // American flag sort: in-place cycle permutation
-  for(int d = 0; d < 256; ++d) {
+  for(std::size_t d = 0; d < buckets; ++d) { head[d] = sum; sum += count[d]; tail[d] = sum; }
+  for(std::size_t d = 0; d < buckets; ++d) { // in-place cycle permutation
     while(head[d] < tail[d]) {
       Dual_edge_record x = begin[head[d]];
-      int dx = int((x.key >> shift) & 0xff);
+      std::size_t dx = (x.key >> shift) & mask;
       while(dx != d) {
         std::swap(x, begin[head[dx]++]);
-        dx = int((x.key >> shift) & 0xff);
+        dx = (x.key >> shift) & mask;
       }
       begin[head[d]++] = x;
     }
   }
   std::size_t start = 0;
-  for(int d = 0; d < 256; ++d) {
-    if(count[d] > 1) radix_sort_records(begin + start, begin + start + count[d], shift - 8, lowest_shift);
+  for(std::size_t d = 0; d < buckets; ++d) {
+    if(count[d] > 1 && shift > lowest_shift)
+      radix_sort_records(begin + start, begin + start + count[d], shift - 8, lowest_shift);
     start += count[d];
   }
 }
@@ -114,9 +127,19 @@ public:
   {
     if(cells_.size() >= (std::size_t(1) << 30))
       throw Input_error(Input_error_code::TOO_FEW_POINTS, "triangulation too large (2^30 cells or more)");
+    auto t0 = std::chrono::steady_clock::now();
     build_records(progress);
+    auto t1 = std::chrono::steady_clock::now();
     sort_records(progress);
+    auto t2 = std::chrono::steady_clock::now();
+    key_seconds_ = std::chrono::duration<double>(t1 - t0).count();
+    sort_seconds_ = std::chrono::duration<double>(t2 - t1).count() - repair_seconds_;
   }
+
+  // timings of the stages (statistics)
+  double key_seconds() const { return key_seconds_; }
+  double sort_seconds() const { return sort_seconds_; }
+  double repair_seconds() const { return repair_seconds_; }
 
   const Triangulation& triangulation() const { return dt_; }
   std::size_t number_of_cells() const { return cells_.size(); }
@@ -148,8 +171,10 @@ public:
     return t;
   }
 
-  // number of records sorted with the exact comparator (statistics)
-  std::size_t number_of_repaired_records() const { return repaired_; }
+  // number of records that the fast keys did not order, and of those that the exact
+  // comparator had to order (statistics)
+  std::size_t number_of_records_in_runs() const { return in_runs_; }
+  std::size_t number_of_exactly_sorted_records() const { return exactly_sorted_; }
 
 private:
   template <class Progress>
@@ -160,6 +185,9 @@ private:
     const std::size_t facets = 2 * cells_.size() - (3 * hull.size()) / 2;
     records_.reserve(facets);
 
+    // Each finite facet is written once, by the cell of lower address among its two cells;
+    // an infinite cell writes its finite facet from the side of its finite neighbor. No
+    // neighbor cell is read in the common case.
     const Vertex_handle infinite = dt_.infinite_vertex();
     std::uint32_t pos = 0;
     const auto& container = dt_.tds().cells();
@@ -167,34 +195,43 @@ private:
       if((pos & 0xfffff) == 0 && !progress(0.5 * double(pos) / double(cells_.size())))
         throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
       const Cell& c = *it;
-      if(c.vertex(0) == infinite || c.vertex(1) == infinite || c.vertex(2) == infinite ||
-         c.vertex(3) == infinite)
+      int infinite_index = -1;
+      for(int i = 0; i < 4; ++i)
+        if(c.vertex(i) == infinite) infinite_index = i;
+      if(infinite_index >= 0) {
+        const Cell_handle n = c.neighbor(infinite_index);
+        if(std::less<const Cell*>()(&*n, &c)) continue;
+        add_record(*n, cells_.index(&*n), n->index(cell(pos)), pos);
         continue;
+      }
       for(int j = 0; j < 4; ++j) {
-        const Cell_handle n = c.neighbor(j);
-        const bool n_infinite = n->has_vertex(infinite);
-        if(!n_infinite && !(std::less<const Cell*>()(&c, &*n))) continue;
-        const std::uint32_t other = cells_.index(&*n);
-        Triangle_coordinates_3 t;
-        for(int k = 0; k < 3; ++k) {
-          const auto& p = c.vertex((j + 1 + k) & 3)->point();
-          t[k] = Coordinates_3{{p.x(), p.y(), p.z()}};
-        }
-        double rb2, err;
-        Record r;
-        r.owner = (pos << 2) | std::uint32_t(j);
-        r.other = other;
-        if(approximate_squared_rb(t, max_relative_error, rb2, err)) {
-          r.key = double_bits(rb2) & ~std::uint64_t(1);
-        } else {
-          const std::pair<double, double> range = enclosure_of_squared_rb(t);
-          r.key = double_bits(range.first) | 1;
-          uncertain_upper_.emplace(r.owner, double_bits(range.second) >> dropped_bits);
-        }
-        records_.push_back(r);
+        const Cell* n = &*c.neighbor(j);
+        if(std::less<const Cell*>()(n, &c)) continue;
+        add_record(c, pos, j, cells_.index(n));
       }
     }
     CGAL_assertion(records_.size() == facets);
+  }
+
+  void add_record(const Cell& c, std::uint32_t pos, int j, std::uint32_t other)
+  {
+    Triangle_coordinates_3 t;
+    for(int k = 0; k < 3; ++k) {
+      const auto& p = c.vertex((j + 1 + k) & 3)->point();
+      t[k] = Coordinates_3{{p.x(), p.y(), p.z()}};
+    }
+    double rb2, err;
+    Record r;
+    r.owner = (pos << 2) | std::uint32_t(j);
+    r.other = other;
+    if(approximate_squared_rb(t, max_relative_error, rb2, err)) {
+      r.key = double_bits(rb2) & ~std::uint64_t(1);
+    } else {
+      const std::pair<double, double> range = enclosure_of_squared_rb(t);
+      r.key = double_bits(range.first) | 1;
+      uncertain_upper_.emplace(r.owner, double_bits(range.second) >> dropped_bits);
+    }
+    records_.push_back(r);
   }
 
   // An interval that certainly contains R_B^2, for triangles the fast path could not bound.
@@ -225,6 +262,74 @@ private:
     return std::make_pair(lmax_inf * 0.25, hi);
   }
 
+  // A triangle of a run with its radii in double and certified error bounds, and its longest
+  // edge as a pair of vertices when it is certainly obtuse.
+  struct Run_member
+  {
+    Record record;
+    Approximate_radii_3 radii;
+    const void* edge[2];
+  };
+
+  // Sorts records [i, j) with double evaluations when their error bounds decide every
+  // comparison (insertion sort: runs are short); returns false, leaving the records in some
+  // order, when one comparison is undecided.
+  bool sort_run_in_double(std::size_t i, std::size_t j)
+  {
+    members_.clear();
+    for(std::size_t k = i; k < j; ++k) {
+      const Record& r = records_[k];
+      const Cell_handle c = cell(owner_position(r));
+      const int f = facet_index(r);
+      Run_member m;
+      m.record = r;
+      m.radii = approximate_radii(facet_coordinates(c, f));
+      m.edge[0] = m.edge[1] = nullptr;
+      if(m.radii.longest >= 0) {
+        const void* a = &*c->vertex((f + 1 + (m.radii.longest + 1) % 3) & 3);
+        const void* b = &*c->vertex((f + 1 + (m.radii.longest + 2) % 3) & 3);
+        m.edge[0] = (std::min)(a, b, std::less<const void*>());
+        m.edge[1] = (std::max)(a, b, std::less<const void*>());
+      }
+      members_.push_back(m);
+    }
+    for(std::size_t a = 1; a < members_.size(); ++a) {
+      const Run_member x = members_[a];
+      std::size_t b = a;
+      for(; b > 0; --b) {
+        const int c = compare_in_double(members_[b - 1], x);
+        if(c == 0) return false;
+        if(c < 0) break;
+        members_[b] = members_[b - 1];
+      }
+      members_[b] = x;
+    }
+    for(std::size_t k = i; k < j; ++k) records_[k] = members_[k - i].record;
+    return true;
+  }
+
+  // -1, +1: the first comes before, after the second; 0: undecided
+  static int compare_in_double(const Run_member& a, const Run_member& b)
+  {
+    auto separated = [](double x, double ex, double y, double ey) -> int {
+      if(x * (1 + ex) < y * (1 - ey)) return -1;
+      if(y * (1 + ey) < x * (1 - ex)) return 1;
+      return 0;
+    };
+    if(a.edge[0] != nullptr && a.edge[0] == b.edge[0] && a.edge[1] == b.edge[1])
+      return -separated(a.radii.rc2, a.radii.rc_error, b.radii.rc2, b.radii.rc_error); // equal R_B: larger R_C first
+    return separated(a.radii.rb2, a.radii.rb_error, b.radii.rb2, b.radii.rb_error);
+  }
+
+  static void prefetch(const void* p)
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    CGAL_USE(p);
+#endif
+  }
+
   std::uint64_t upper_code(const Record& r) const
   {
     if((r.key & 1) == 0) return r.key >> dropped_bits;
@@ -241,40 +346,62 @@ private:
     for(const Record& r : records_) { lo = (std::min)(lo, r.key); hi = (std::max)(hi, r.key); }
     int top = 63;
     while(top > 0 && ((lo ^ hi) >> top) == 0) --top; // highest differing bit
-    int shift = (std::max)(top - 7, 0);
-    radix_sort_records(records_.data(), records_.data() + records_.size(), shift, dropped_bits);
+    // first digit: 16 bits below the highest differing bit, then 8 bits at a time
+    radix_sort_records(records_.data(), records_.data() + records_.size(), (std::max)(top - 15, 0),
+                       dropped_bits, 16);
     if(!progress(0.8))
       throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
 
-    // runs that the keys cannot order: sort them exactly
-    std::vector<std::pair<Triangle_order_key_3, Record>> run;
+    // runs that the keys cannot order: first found in one sequential sweep...
+    const auto repair_start = std::chrono::steady_clock::now();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
     const std::size_t n = records_.size();
-    std::size_t i = 0;
-    while(i < n) {
+    for(std::size_t i = 0; i < n;) {
       std::uint64_t reach = upper_code(records_[i]);
       std::size_t j = i + 1;
       while(j < n && (records_[j].key >> dropped_bits) <= reach + 1) {
         reach = (std::max)(reach, upper_code(records_[j]));
         ++j;
       }
-      if(j - i > 1) {
+      if(j - i > 1) runs.emplace_back(std::uint32_t(i), std::uint32_t(j));
+      i = j;
+    }
+    // ... then sorted in double when the bounds decide, exactly otherwise. The geometry of
+    // the runs ahead is prefetched: the records of a run are scattered in memory.
+    std::vector<std::pair<Triangle_order_key_3, Record>> run;
+    constexpr std::size_t cells_ahead = 12, vertices_ahead = 6;
+    for(std::size_t g = 0; g < runs.size(); ++g) {
+      if(g + cells_ahead < runs.size())
+        for(std::uint32_t k = runs[g + cells_ahead].first; k < runs[g + cells_ahead].second; ++k)
+          prefetch(cells_.element(owner_position(records_[k])));
+      if(g + vertices_ahead < runs.size())
+        for(std::uint32_t k = runs[g + vertices_ahead].first; k < runs[g + vertices_ahead].second; ++k) {
+          const Cell* c = cells_.element(owner_position(records_[k]));
+          const int f = facet_index(records_[k]);
+          for(int v = 1; v < 4; ++v) prefetch(&c->vertex((f + v) & 3)->point());
+        }
+      const std::size_t i = runs[g].first, j = runs[g].second;
+      if(!sort_run_in_double(i, j)) {
         run.clear();
         for(std::size_t k = i; k < j; ++k)
           run.emplace_back(Triangle_order_key_3(coordinates(records_[k])), records_[k]);
         std::sort(run.begin(), run.end(),
-                  [](const auto& a, const auto& b) { return compare(a.first, b.first) == SMALLER; });
+                  [](const auto& x, const auto& y) { return compare(x.first, y.first) == SMALLER; });
         for(std::size_t k = i; k < j; ++k) records_[k] = run[k - i].second;
-        repaired_ += j - i;
+        exactly_sorted_ += j - i;
       }
-      i = j;
+      in_runs_ += j - i;
     }
+    repair_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - repair_start).count();
   }
 
   const Triangulation& dt_;
   Handle_index_map<Cell> cells_;
   std::vector<Record> records_;
   std::unordered_map<std::uint32_t, std::uint64_t> uncertain_upper_;
-  std::size_t repaired_ = 0;
+  std::vector<Run_member> members_;
+  std::size_t in_runs_ = 0, exactly_sorted_ = 0;
+  double key_seconds_ = 0, sort_seconds_ = 0, repair_seconds_ = 0;
 };
 
 } // namespace internal

@@ -174,56 +174,76 @@ inline Comparison_result compare_triangle_order(const Triangle_coordinates_3& s,
 }
 
 // ---------------------------------------------------------------------------------------
-// Fast approximation of R_B^2 in plain double arithmetic with a certified relative error
-// bound, for the presort of millions of triangles. Returns false when the bound is not
-// below `max_relative_error` (needle-like acute triangles, overflow, underflow): such a
-// triangle must then be placed with the exact comparator.
+// Fast approximation of both squared radii in plain double arithmetic, with certified
+// relative error bounds, for the sort of millions of triangles. A bound is infinite when it
+// cannot be given (needle-like or flat triangles, overflow, underflow): such comparisons
+// must then be made by the exact comparator.
 // Error analysis (u = 2^-53, every operation rounded to nearest): each coordinate
 // difference has relative error <= u; a sum of three squares <= 6u; the cross-product
 // component n_x = a_y b_z - a_z b_y has absolute error <= 3u(|a_y b_z| + |a_z b_y|) + u|n_x|;
 // |n|^2 then has relative error <= (2 sum |n_i| e_i + sum e_i^2) / |n|^2 + 4u; the
 // circumradius l0 l1 l2 / (4 |n|^2) adds 20u. The bounds below are doubled for safety.
-inline bool approximate_squared_rb(const Triangle_coordinates_3& t, double max_relative_error,
-                                   double& rb2, double& relative_error)
+struct Approximate_radii_3
+{
+  double rb2 = 0, rb_error = std::numeric_limits<double>::infinity();
+  double rc2 = 0, rc_error = std::numeric_limits<double>::infinity();
+  int longest = -1; // index of the vertex opposite the longest edge if certainly obtuse, else -1
+};
+
+inline Approximate_radii_3 approximate_radii(const Triangle_coordinates_3& t)
 {
   constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
+  constexpr double inf = std::numeric_limits<double>::infinity();
   const Coordinates_3 &p = t[0], &q = t[1], &r = t[2];
   const double ax = q[0] - p[0], ay = q[1] - p[1], az = q[2] - p[2];
   const double bx = r[0] - p[0], by = r[1] - p[1], bz = r[2] - p[2];
   const double cx = r[0] - q[0], cy = r[1] - q[1], cz = r[2] - q[2];
-  const double la = ax * ax + ay * ay + az * az;
-  const double lb = bx * bx + by * by + bz * bz;
-  const double lc = cx * cx + cy * cy + cz * cz;
-  const double m = (std::max)(la, (std::max)(lb, lc));
-  const double s = la + lb + lc - m;
+  const double l2 = ax * ax + ay * ay + az * az; // opposite r
+  const double l1 = bx * bx + by * by + bz * bz; // opposite q
+  const double l0 = cx * cx + cy * cy + cz * cz; // opposite p
+  int longest = 0;
+  double m = l0;
+  if(l1 > m) { m = l1; longest = 1; }
+  if(l2 > m) { m = l2; longest = 2; }
+  const double s = l0 + l1 + l2 - m;
 
-  // certainly obtuse: m > s with a margin larger than the errors (6u each, 2u for s)
-  if(m > s * (1 + 64 * u)) {
-    rb2 = m * 0.25;
-    relative_error = 16 * u;
-  } else {
-    const double t1 = ay * bz, t2 = az * by, t3 = az * bx, t4 = ax * bz, t5 = ax * by, t6 = ay * bx;
-    const double nx = t1 - t2, ny = t3 - t4, nz = t5 - t6;
-    const double ex = 3 * u * (std::abs(t1) + std::abs(t2)) + u * std::abs(nx);
-    const double ey = 3 * u * (std::abs(t3) + std::abs(t4)) + u * std::abs(ny);
-    const double ez = 3 * u * (std::abs(t5) + std::abs(t6)) + u * std::abs(nz);
-    const double d = nx * nx + ny * ny + nz * nz;
-    const double dn = 2 * (std::abs(nx) * ex + std::abs(ny) * ey + std::abs(nz) * ez) +
-                      ex * ex + ey * ey + ez * ez;
-    if(!(d > 0) || !(dn < 0.25 * d)) return false;
-    const double rc2 = la * lb * lc / (4 * d);
-    double err = 2 * (dn / d + 32 * u);
-    if(m >= s * (1 - 64 * u)) { // nearly right: rb2 is m/4 or rc2, which are close
-      err += std::abs(rc2 - m * 0.25) / (m * 0.25) + 16 * u;
-      rb2 = m * 0.25;
-    } else {
-      rb2 = rc2;
-    }
-    relative_error = err;
+  const double t1 = ay * bz, t2 = az * by, t3 = az * bx, t4 = ax * bz, t5 = ax * by, t6 = ay * bx;
+  const double nx = t1 - t2, ny = t3 - t4, nz = t5 - t6;
+  const double ex = 3 * u * (std::abs(t1) + std::abs(t2)) + u * std::abs(nx);
+  const double ey = 3 * u * (std::abs(t3) + std::abs(t4)) + u * std::abs(ny);
+  const double ez = 3 * u * (std::abs(t5) + std::abs(t6)) + u * std::abs(nz);
+  const double d = nx * nx + ny * ny + nz * nz;
+  const double dn = 2 * (std::abs(nx) * ex + std::abs(ny) * ey + std::abs(nz) * ez) + ex * ex + ey * ey + ez * ez;
+
+  Approximate_radii_3 res;
+  const bool in_range = m > 1e-250 && m < 1e250;
+  if(in_range && d > 0 && dn < 0.25 * d) {
+    res.rc2 = l0 * l1 * l2 / (4 * d);
+    if(res.rc2 > 1e-250 && res.rc2 < 1e250) res.rc_error = 2 * (dn / d + 32 * u);
   }
-  // outside the normal range the relative bounds above do not hold (underflow, overflow)
-  if(!(rb2 > 1e-250 && rb2 < 1e250 && m > 1e-250)) return false;
-  return relative_error < max_relative_error;
+  if(m > s * (1 + 64 * u)) { // certainly obtuse: m > s beyond their errors (6u, 8u)
+    res.longest = longest;
+    res.rb2 = m * 0.25;
+    res.rb_error = in_range ? 16 * u : inf;
+  } else if(m < s * (1 - 64 * u)) { // certainly acute
+    res.rb2 = res.rc2;
+    res.rb_error = res.rc_error;
+  } else { // nearly right: R_B^2 is m/4 or R_C^2, which are then close
+    res.rb2 = m * 0.25;
+    res.rb_error = in_range ? std::abs(res.rc2 - res.rb2) / res.rb2 + res.rc_error + 16 * u : inf;
+  }
+  if(!(res.rb_error < 0.25)) res.rb_error = inf;
+  return res;
+}
+
+// R_B^2 with a relative error below `max_relative_error`, or false.
+inline bool approximate_squared_rb(const Triangle_coordinates_3& t, double max_relative_error,
+                                   double& rb2, double& relative_error)
+{
+  const Approximate_radii_3 a = approximate_radii(t);
+  rb2 = a.rb2;
+  relative_error = a.rb_error;
+  return a.rb_error < max_relative_error;
 }
 
 } // namespace internal

@@ -1,0 +1,143 @@
+// Benchmark of closed surface reconstruction against CGAL's Delaunay triangulation and
+// advancing front reconstruction, on points sampled from a noisy torus.
+//
+//   benchmark_closed_surface [N ...]           runs every measurement for each N, each in a
+//                                              fresh process (peak memory is per process),
+//                                              and prints a table with the ratios
+//   benchmark_closed_surface --one MODE N      one measurement (delaunay | lex | afsr), JSON
+#include <CGAL/Advancing_front_surface_reconstruction.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/lex_optimal_closed_surface.h>
+
+#include <sys/resource.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+
+static double peak_rss_mb()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;
+}
+
+// n points on a torus (R = 1, r = 0.4), uniform by area, with noise of 0.2% of r
+static std::vector<Point> noisy_torus(std::size_t n)
+{
+  CGAL::Random rng(42);
+  const double R = 1.0, r = 0.4, eps = 0.0008, pi = 3.14159265358979323846;
+  std::vector<Point> pts;
+  pts.reserve(n);
+  while(pts.size() < n) {
+    const double u = rng.get_double(0, 2 * pi), v = rng.get_double(0, 2 * pi);
+    if(rng.get_double(0, R + r) > R + r * std::cos(v)) continue;
+    pts.emplace_back((R + r * std::cos(v)) * std::cos(u) + rng.get_double(-eps, eps),
+                     (R + r * std::cos(v)) * std::sin(u) + rng.get_double(-eps, eps),
+                     r * std::sin(v) + rng.get_double(-eps, eps));
+  }
+  return pts;
+}
+
+static int one(const std::string& mode, std::size_t n)
+{
+  const std::vector<Point> pts = noisy_torus(n);
+  const double base_mb = peak_rss_mb();
+  CGAL::Real_timer t;
+  std::ostringstream json;
+  json << std::setprecision(6) << "{\"mode\":\"" << mode << "\",\"n\":" << n;
+  if(mode == "delaunay") {
+    t.start();
+    CGAL::Delaunay_triangulation_3<K> dt(pts.begin(), pts.end());
+    t.stop();
+    json << ",\"delaunay_s\":" << t.time() << ",\"cells\":" << dt.number_of_cells();
+  } else if(mode == "lex") {
+    Mesh mesh;
+    t.start();
+    const auto r = CGAL::lex_optimal_closed_surface_reconstruction(pts, mesh);
+    t.stop();
+    json << ",\"delaunay_s\":" << r.delaunay_seconds << ",\"order_s\":" << r.order_seconds
+         << ",\"cut_s\":" << r.cut_seconds << ",\"output_s\":" << r.output_seconds << ",\"total_s\":" << t.time()
+         << ",\"faces\":" << r.mesh_faces << ",\"genus\":" << r.genus << ",\"components\":" << r.components
+         << ",\"exactly_ordered\":" << r.number_of_exactly_ordered_triangles << ",\"triangles\":" << r.number_of_triangles;
+  } else if(mode == "afsr") {
+    std::vector<std::array<std::size_t, 3>> facets;
+    t.start();
+    CGAL::advancing_front_surface_reconstruction(pts.begin(), pts.end(), std::back_inserter(facets));
+    t.stop();
+    json << ",\"total_s\":" << t.time() << ",\"faces\":" << facets.size();
+  } else {
+    std::cerr << "unknown mode " << mode << "\n";
+    return 2;
+  }
+  json << ",\"points_mb\":" << base_mb << ",\"peak_rss_mb\":" << peak_rss_mb() << "}";
+  std::cout << json.str() << std::endl;
+  return 0;
+}
+
+static std::map<std::string, double> run_child(const std::string& self, const std::string& mode, std::size_t n)
+{
+  const std::string cmd = self + " --one " + mode + " " + std::to_string(n);
+  std::map<std::string, double> values;
+  FILE* p = popen(cmd.c_str(), "r");
+  if(!p) return values;
+  std::string out;
+  char buf[4096];
+  while(fgets(buf, sizeof buf, p)) out += buf;
+  pclose(p);
+  // flat JSON of numbers: "key":value pairs
+  std::size_t pos = 0;
+  while((pos = out.find('"', pos)) != std::string::npos) {
+    const std::size_t end = out.find('"', pos + 1);
+    const std::string key = out.substr(pos + 1, end - pos - 1);
+    pos = end + 1;
+    if(pos < out.size() && out[pos] == ':' && out[pos + 1] != '"') values[key] = std::atof(out.c_str() + pos + 1);
+  }
+  std::cerr << out;
+  return values;
+}
+
+int main(int argc, char** argv)
+{
+  if(argc == 4 && std::string(argv[1]) == "--one") return one(argv[2], std::stoul(argv[3]));
+  if(argc == 3 && std::string(argv[1]) == "--profile") { // one verbose reconstruction
+    const std::vector<Point> pts = noisy_torus(std::stoul(argv[2]));
+    Mesh mesh;
+    CGAL::lex_optimal_closed_surface_reconstruction(pts, mesh, CGAL::parameters::verbose(true));
+    return 0;
+  }
+  std::vector<std::size_t> sizes;
+  for(int i = 1; i < argc; ++i) sizes.push_back(std::stoul(argv[i]));
+  if(sizes.empty()) sizes = {100000, 1000000};
+  std::cout << std::fixed << std::setprecision(3)
+            << "points     delaunay_s  lex_total_s  order+cut_s  (order+cut)/DT  total/DT  peakRSS_lex/DT  afsr_s  afsr/lex\n";
+  for(std::size_t n : sizes) {
+    auto d = run_child(argv[0], "delaunay", n);
+    auto l = run_child(argv[0], "lex", n);
+    std::map<std::string, double> a;
+    if(n <= 1000000) a = run_child(argv[0], "afsr", n);
+    const double dt = d["delaunay_s"], oc = l["order_s"] + l["cut_s"];
+    std::cout << std::setw(9) << n << "  " << std::setw(10) << dt << "  " << std::setw(11) << l["total_s"] << "  "
+              << std::setw(11) << oc << "  " << std::setw(14) << oc / dt << "  " << std::setw(8) << l["total_s"] / dt
+              << "  " << std::setw(14) << l["peak_rss_mb"] / d["peak_rss_mb"] << "  ";
+    if(a.count("total_s")) std::cout << std::setw(6) << a["total_s"] << "  " << std::setw(8) << a["total_s"] / l["total_s"];
+    else std::cout << "     -         -";
+    std::cout << "   (peak MB: DT " << d["peak_rss_mb"] << ", lex " << l["peak_rss_mb"] << ")" << std::endl;
+  }
+  return 0;
+}
