@@ -29,6 +29,7 @@
 #include <functional>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -290,13 +291,20 @@ void reconstruct_in(Triangulation& dt, PolygonMesh& mesh, const NamedParameters&
   using parameters::choose_parameter;
   using parameters::get_parameter;
   std::vector<bool> inside;
-  const auto facets = closed_surface_facets(dt, np, callback, 0.35, report, inside);
-  // map cells to the positions used by `inside`
-  const Handle_index_map<typename Triangulation::Cell> positions(dt.tds().cells().begin(), dt.tds().cells().end());
+  std::vector<typename Triangulation::Facet> facets = closed_surface_facets(dt, np, callback, 0.35, report, inside);
   watch.lap();
-  Closed_surface_mesh_3<Triangulation> surface(facets, positions, inside);
-  surface.build(mesh, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh)));
-  const Closed_surface_statistics& s = surface.statistics();
+  std::unique_ptr<Closed_surface_mesh_3<Triangulation>> surface;
+  {
+    // map cells to the positions used by `inside`
+    const Handle_index_map<typename Triangulation::Cell> positions(dt.tds().cells().begin(), dt.tds().cells().end());
+    surface.reset(new Closed_surface_mesh_3<Triangulation>(facets, positions, inside));
+  }
+  // the triangulation (ours) is freed before the mesh is built: peak memory
+  std::vector<typename Triangulation::Facet>().swap(facets);
+  std::vector<bool>().swap(inside);
+  dt.clear();
+  surface->build(mesh, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh)));
+  const Closed_surface_statistics& s = surface->statistics();
   report.mesh_vertices = s.vertices;
   report.mesh_faces = s.faces;
   report.components = s.components;

@@ -27,7 +27,7 @@ points are united. After all edges, the cut is the set of edges between the fina
 of \f$\alpha_1\f$ and the rest, and it is the lexicographic minimal set of edges whose
 removal disconnects the sources from the sinks.
 
-Cost: \f$O(m\,\alpha(n))\f$ for \f$m\f$ edges (union by size and path halving).
+Cost: \f$O(m\,\alpha(n))\f$ for \f$m\f$ edges (union by rank and path halving).
 */
 class Lexicographic_min_cut
 {

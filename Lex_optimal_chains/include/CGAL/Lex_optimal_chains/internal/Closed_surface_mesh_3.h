@@ -140,7 +140,7 @@ public:
     std::vector<std::uint32_t> original(copies_.size());
     {
       std::vector<std::pair<const Vertex*, std::uint32_t>> order(copies_.size());
-      for(std::uint32_t i = 0; i < copies_.size(); ++i) order[i] = std::make_pair(&*copies_[i], i);
+      for(std::uint32_t i = 0; i < copies_.size(); ++i) order[i] = std::make_pair(&*copies_[i], std::uint32_t(i));
       std::sort(order.begin(), order.end());
       std::uint32_t id = 0;
       for(std::size_t i = 0; i < order.size(); ++i) {
@@ -173,11 +173,21 @@ public:
         const std::int64_t chi = v_count[k] - 3 * f_count[k] / 2 + f_count[k];
         stats_.genus += long((2 - chi) / 2);
       }
+
+    // keep only what `build()` needs, without references into the triangulation, so that
+    // the caller may free the triangulation before the mesh is built
+    points_.reserve(copies_.size());
+    for(const Vertex_handle& v : copies_) points_.push_back(v->point());
+    std::vector<Vertex_handle>().swap(copies_);
+    std::vector<Vertex_handle>().swap(corners_);
+    std::vector<Facet>().swap(facets_);
+    std::vector<Slot>().swap(table_);
   }
 
   const Closed_surface_statistics& statistics() const { return stats_; }
 
-  // Writes the surface into an empty `PolygonMesh` (a model of `MutableFaceGraph`).
+  // Adds the surface to `mesh` (a model of `MutableFaceGraph`). The triangulation is not
+  // needed any more.
   template <class PolygonMesh, class VertexPointMap>
   void build(PolygonMesh& mesh, VertexPointMap vpm) const
   {
@@ -186,10 +196,10 @@ public:
     using halfedge_descriptor = typename GT::halfedge_descriptor;
     using face_descriptor = typename GT::face_descriptor;
 
-    std::vector<vertex_descriptor> vd(copies_.size());
-    for(std::size_t i = 0; i < copies_.size(); ++i) {
+    std::vector<vertex_descriptor> vd(points_.size());
+    for(std::size_t i = 0; i < points_.size(); ++i) {
       vd[i] = add_vertex(mesh);
-      put(vpm, vd[i], copies_[i]->point());
+      put(vpm, vd[i], points_[i]);
     }
     // edges and faces are created in the canonical order of the facets
     std::vector<halfedge_descriptor> hd(twin_.size());
@@ -282,6 +292,7 @@ private:
   std::vector<Vertex_handle> corners_;
   std::vector<std::uint32_t> corner_vertex_;
   std::vector<Vertex_handle> copies_;
+  std::vector<typename Triangulation::Point> points_; // of the copies, for build()
   Closed_surface_statistics stats_;
 };
 

@@ -15,8 +15,9 @@ namespace CGAL {
 namespace Lex_optimal_chains {
 namespace internal {
 
-// Disjoint sets over the dense indices [0, n): path halving and union by size.
-// Sizes are kept in a separate array so that `find` touches one 32-bit word per step.
+// Disjoint sets over the dense indices [0, n): path halving and union by rank.
+// Ranks (at most log2 n < 256) are bytes in a separate array, so that `find` touches one
+// 32-bit word per step and the structure costs 5 bytes per element.
 class Union_find
 {
 public:
@@ -28,7 +29,7 @@ public:
   {
     parent_.resize(n);
     std::iota(parent_.begin(), parent_.end(), Index(0));
-    size_.assign(n, 1);
+    rank_.assign(n, 0);
   }
 
   std::size_t size() const { return parent_.size(); }
@@ -48,9 +49,9 @@ public:
   {
     CGAL_precondition(parent_[a] == a && parent_[b] == b);
     if(a == b) return a;
-    if(size_[a] < size_[b]) std::swap(a, b);
+    if(rank_[a] < rank_[b]) std::swap(a, b);
     parent_[b] = a;
-    size_[a] += size_[b];
+    if(rank_[a] == rank_[b]) ++rank_[a];
     return a;
   }
 
@@ -59,13 +60,13 @@ public:
   // Releases the memory of the parent array to the caller (for reuse as scratch space).
   std::vector<Index> release_parents()
   {
-    std::vector<Index>().swap(size_);
+    std::vector<std::uint8_t>().swap(rank_);
     return std::move(parent_);
   }
 
 private:
   std::vector<Index> parent_;
-  std::vector<Index> size_;
+  std::vector<std::uint8_t> rank_;
 };
 
 } // namespace internal
