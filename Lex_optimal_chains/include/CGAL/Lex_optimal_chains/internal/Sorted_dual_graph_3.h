@@ -383,27 +383,33 @@ private:
     // their cells, which turns random reads into nearly sequential ones.
     std::vector<std::pair<Triangle_order_key_3, Record>> run;
     std::vector<std::uint64_t> order, buffer;
-    std::vector<Run_member> members;
-    constexpr std::size_t chunk = std::size_t(1) << 19;
+    std::vector<std::uint32_t> record_of_slot;
+    std::vector<Run_member> members; // a chunk's members, run after run
+    constexpr std::size_t chunk = std::size_t(1) << 16;
     for(std::size_t g0 = 0; g0 < runs.size();) {
       std::size_t g1 = g0, count = 0;
       while(g1 < runs.size() && (count == 0 || count + (runs[g1].second - runs[g1].first) <= chunk))
         count += runs[g1].second - runs[g1].first, ++g1;
-      const std::uint32_t first = runs[g0].first;
       order.clear();
+      record_of_slot.clear();
       for(std::size_t g = g0; g < g1; ++g)
-        for(std::uint32_t k = runs[g].first; k < runs[g].second; ++k)
-          order.push_back((std::uint64_t(owner_position(records_[k])) << 32) | k);
+        for(std::uint32_t k = runs[g].first; k < runs[g].second; ++k) {
+          order.push_back((std::uint64_t(owner_position(records_[k])) << 32) | record_of_slot.size());
+          record_of_slot.push_back(k);
+        }
       radix_sort_high_words(order, buffer);
-      members.resize(runs[g1 - 1].second - first);
+      members.resize(count);
       for(std::uint64_t o : order) {
-        const std::uint32_t k = std::uint32_t(o);
-        members[k - first] = make_member(records_[k]);
+        const std::uint32_t slot = std::uint32_t(o);
+        members[slot] = make_member(records_[record_of_slot[slot]]);
       }
+      std::size_t first_slot = 0;
       for(std::size_t g = g0; g < g1; ++g) {
         const std::size_t i = runs[g].first, j = runs[g].second;
-        if(sort_members_in_double(members.data() + (i - first), members.data() + (j - first))) {
-          for(std::size_t k = i; k < j; ++k) records_[k] = members[k - first].record;
+        Run_member* m = members.data() + first_slot;
+        first_slot += j - i;
+        if(sort_members_in_double(m, m + (j - i))) {
+          for(std::size_t k = i; k < j; ++k) records_[k] = m[k - i].record;
         } else {
           run.clear();
           for(std::size_t k = i; k < j; ++k)
