@@ -9,7 +9,7 @@ case "$mode" in run|test) ;; *) echo "usage: $0 run|test" >&2; exit 2 ;; esac
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make ccache libcgal-dev libcgal-demo libeigen3-dev libtbb-dev libgmp-dev
-          libmpfr-dev libboost-dev libboost-timer-dev libcli11-dev nlohmann-json3-dev)
+          libmpfr-dev libboost-dev libboost-timer-dev libcli11-dev nlohmann-json3-dev doxygen)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -51,9 +51,14 @@ struct Closed_surface_report
   std::size_t number_of_facets = 0;            ///< facets of the optimal 2-cycle
   bool automatic_interior = false;             ///< true if the interior cell was chosen automatically
   double interior_persistence = 0;             ///< persistence ratio of the automatic interior
-  double delaunay_seconds = 0, order_seconds = 0, cut_seconds = 0, output_seconds = 0, total_seconds = 0;
-  // output mesh (reconstruction only)
-  std::size_t mesh_vertices = 0, mesh_faces = 0, components = 0;
+  double delaunay_seconds = 0;                 ///< time to build the Delaunay triangulation
+  double order_seconds = 0;                    ///< time to sort the triangles
+  double cut_seconds = 0;                      ///< time of the automatic interior and of Algorithm 8
+  double output_seconds = 0;                   ///< time to build the mesh
+  double total_seconds = 0;                    ///< time of the whole call
+  std::size_t mesh_vertices = 0;               ///< vertices of the output mesh (reconstruction only)
+  std::size_t mesh_faces = 0;                  ///< faces of the output mesh (reconstruction only)
+  std::size_t components = 0;                  ///< connected components of the output mesh
   std::size_t non_manifold_vertices = 0;       ///< triangulation vertices split in several mesh vertices
   std::size_t non_manifold_edges = 0;          ///< triangulation edges split in several mesh edges
   long genus = 0;                              ///< sum of the genera of the components

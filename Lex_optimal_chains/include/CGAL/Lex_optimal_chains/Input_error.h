@@ -35,10 +35,12 @@ Exception thrown on input a user can get wrong. `what()` says what was wrong and
 class Input_error : public std::invalid_argument
 {
 public:
+  /// builds an error with its code and its message
   Input_error(Input_error_code code, const std::string& message)
     : std::invalid_argument(message), code_(code)
   {}
 
+  /// what was wrong
   Input_error_code code() const { return code_; }
 
 private:

@@ -32,6 +32,7 @@ Cost: \f$O(m\,\alpha(n))\f$ for \f$m\f$ edges (union by rank and path halving).
 class Lexicographic_min_cut
 {
 public:
+  /// index of a vertex of the graph
   using Vertex_index = std::uint32_t;
 
   /// Sets up `n` vertices with the given sources and sinks (ranges of vertex indices).
@@ -67,7 +68,9 @@ public:
   /// `true` if `v` is (now) connected to the sources.
   bool is_on_source_side(Vertex_index v) { return sets_.find(v) == source_root_; }
 
+  /// representative of the component of the sources
   Vertex_index sources_root() const { return source_root_; }
+  /// representative of the component of the sinks
   Vertex_index sinks_root() const { return sink_root_; }
 
   /// Representative of the set that holds `v`.
