@@ -192,5 +192,24 @@ int main()
     std::cout << "grid " << trial << ": " << rec.size() << " triangles sorted, "
               << graph.number_of_records_in_runs() << " in close runs, " << graph.number_of_exactly_sorted_records() << " placed by the exact comparator\n";
   }
+
+  // 8. the fast paths (keys, same-longest-edge runs ordered by q, runs in double) on a noisy
+  //    sphere, where almost nothing reaches the exact comparator: every adjacent pair is checked
+  {
+    std::vector<Point> pts;
+    while(pts.size() < 15000) {
+      const K::Vector_3 v(rng.get_double(-1, 1), rng.get_double(-1, 1), rng.get_double(-1, 1));
+      const double l = std::sqrt(v.squared_length());
+      if(l > 1e-3 && l < 1) pts.push_back(CGAL::ORIGIN + v / l * (1 + rng.get_double(-0.003, 0.003)));
+    }
+    CGAL::Delaunay_triangulation_3<K> dt(pts.begin(), pts.end());
+    LI::Sorted_dual_graph_3<CGAL::Delaunay_triangulation_3<K>> graph(dt, [](double) { return true; });
+    const auto& rec = graph.records();
+    for(std::size_t i = 1; i < rec.size(); ++i)
+      assert(LI::compare_triangle_order(graph.coordinates(rec[i - 1]), graph.coordinates(rec[i])) == CGAL::SMALLER);
+    assert(graph.number_of_records_in_runs() > rec.size() / 10); // the runs were exercised
+    std::cout << "noisy sphere: " << rec.size() << " triangles sorted, " << graph.number_of_records_in_runs()
+              << " in close runs, " << graph.number_of_exactly_sorted_records() << " placed by the exact comparator\n";
+  }
   return 0;
 }

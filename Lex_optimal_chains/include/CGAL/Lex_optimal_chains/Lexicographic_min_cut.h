@@ -65,6 +65,14 @@ public:
     return false;
   }
 
+  /// Hints that the edge `(u,v)` will be processed soon: its end points are looked up in memory
+  /// ahead of time (a performance hint only).
+  void prefetch(Vertex_index u, Vertex_index v) const
+  {
+    sets_.prefetch(u);
+    sets_.prefetch(v);
+  }
+
   /// `true` if `v` is (now) connected to the sources.
   bool is_on_source_side(Vertex_index v) { return sets_.find(v) == source_root_; }
 

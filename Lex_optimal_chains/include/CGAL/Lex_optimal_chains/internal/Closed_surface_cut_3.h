@@ -60,13 +60,19 @@ Automatic_interior most_persistent_void(const Graph& graph, const std::vector<st
   Automatic_interior best;
   bool found = false;
   const std::size_t m = records.size();
+  constexpr std::size_t ahead = 16; // records whose cells are prefetched ahead
   for(std::size_t t = 0; t < m; ++t) {
+    if(t + ahead < m) {
+      const auto& next = records[m - 1 - t - ahead];
+      sets.prefetch(Graph::owner_position(next));
+      sets.prefetch(Graph::other_position(next));
+    }
     const auto& r = records[m - 1 - t];
     const std::uint32_t scan = std::uint32_t(t + 1);
     std::uint32_t a = sets.find(Graph::owner_position(r));
-    std::uint32_t b = sets.find(r.other);
+    std::uint32_t b = sets.find(Graph::other_position(r));
     if(birth[a] == unborn) { birth[a] = scan; birth_cell[a] = Graph::owner_position(r); }
-    if(birth[b] == unborn) { birth[b] = scan; birth_cell[b] = r.other; }
+    if(birth[b] == unborn) { birth[b] = scan; birth_cell[b] = Graph::other_position(r); }
     if(a == b) continue;
     // the younger one dies
     const bool a_younger = birth[a] > birth[b] || (birth[a] == birth[b] && a > b);
@@ -106,8 +112,12 @@ std::vector<Dual_edge_record> lexicographic_closed_cut(const Graph& graph,
   for(std::size_t t = 0; t < m; ++t) {
     if((t & 0xfffff) == 0 && !progress(double(t) / double(m)))
       throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+    if(t + 16 < m) {
+      const auto& next = records[m - 1 - t - 16];
+      cut.prefetch(Graph::owner_position(next), Graph::other_position(next));
+    }
     const auto& r = records[m - 1 - t];
-    if(cut.process(Graph::owner_position(r), r.other)) result.push_back(r);
+    if(cut.process(Graph::owner_position(r), Graph::other_position(r))) result.push_back(r);
   }
   inside.assign(graph.number_of_cells(), false);
   for(std::uint32_t c = 0; c < graph.number_of_cells(); ++c)

@@ -41,9 +41,16 @@ namespace internal {
 
 struct Dual_edge_record
 {
-  std::uint64_t key;   // bit pattern of (a bound on) R_B^2; bit 0 set: uncertain
+  // bits 63-20: the high bits of (a lower bound on) R_B^2 as a double;
+  // bits 19-1: q = R_B^2 / R_C^2 in [0,1] as a fixed-point number (ascending q is
+  //            descending R_C, the order among equal R_B);
+  // bit 0: set if R_B^2 could not be bounded tightly (the key is then a lower bound)
+  std::uint64_t key;
   std::uint32_t owner; // (position of the finite owner cell << 2) | facet index
-  std::uint32_t other; // position of the cell on the other side
+  // (longest edge << 30) | position of the cell on the other side; longest edge is the index
+  // (0-2, in the facet's vertex order) of the vertex opposite the longest edge of a certainly
+  // obtuse triangle whose q is certified, 3 otherwise
+  std::uint32_t other;
 };
 
 inline std::uint64_t double_bits(double d)
@@ -132,6 +139,10 @@ public:
   static constexpr int dropped_bits = 20;
   // relative error bound that the fast key must meet (2^-36, well below 2^-33)
   static constexpr double max_relative_error = 1.0 / (1ull << 36);
+  // bits of the fixed-point q in the key, and the error bound on R_C^2 for q to be used:
+  // q then has an absolute error below 2^-28, far below the step 2^-19 of its code
+  static constexpr int q_bits = 19;
+  static constexpr double max_q_error = 1.0 / (1ull << 30);
 
   // `progress(fraction)` returns false to cancel.
   template <class Progress>
@@ -167,6 +178,8 @@ public:
   }
 
   static std::uint32_t owner_position(const Record& r) { return r.owner >> 2; }
+  static std::uint32_t other_position(const Record& r) { return r.other & 0x3fffffffu; }
+  static int longest_edge(const Record& r) { return int(r.other >> 30); }
   static int facet_index(const Record& r) { return int(r.owner & 3); }
 
   Triangle_coordinates_3 coordinates(const Record& r) const
@@ -233,17 +246,23 @@ private:
       const auto& p = c.vertex((j + 1 + k) & 3)->point();
       t[k] = Coordinates_3{{p.x(), p.y(), p.z()}};
     }
-    double rb2, err;
+    const Approximate_radii_3 a = approximate_radii(t);
     Record r;
     r.owner = (pos << 2) | std::uint32_t(j);
-    r.other = other;
-    if(approximate_squared_rb(t, max_relative_error, rb2, err)) {
-      r.key = double_bits(rb2) & ~std::uint64_t(1);
+    int longest = 3;
+    if(a.rb_error < max_relative_error) {
+      std::uint64_t q = (std::uint64_t(1) << q_bits) - 1; // acute or right: q = 1
+      if(a.longest >= 0 && a.rc_error < max_q_error) {
+        longest = a.longest;
+        q = std::uint64_t((std::min)(1.0, a.rb2 / a.rc2) * double((std::uint64_t(1) << q_bits) - 1));
+      }
+      r.key = (double_bits(a.rb2) & ~((std::uint64_t(1) << dropped_bits) - 1)) | (q << 1);
     } else {
       const std::pair<double, double> range = enclosure_of_squared_rb(t);
       r.key = double_bits(range.first) | 1;
       uncertain_upper_.emplace(r.owner, double_bits(range.second) >> dropped_bits);
     }
+    r.other = other | (std::uint32_t(longest) << 30);
     records_.push_back(r);
   }
 
@@ -287,6 +306,33 @@ private:
   // Sorts records [i, j) with double evaluations when their error bounds decide every
   // comparison (insertion sort: runs are short); returns false, leaving the records in some
   // order, when one comparison is undecided.
+  // Orders a run from the keys alone when it is the common case: certainly obtuse triangles
+  // with the same longest edge (so exactly the same R_B) whose codes of q differ by 2 or
+  // more. Reads one cell per record (the vertices of the longest edge); returns false
+  // otherwise.
+  bool sort_run_by_keys(std::size_t i, std::size_t j)
+  {
+    const std::uint64_t code = records_[i].key >> dropped_bits;
+    const void* edge[2] = {nullptr, nullptr};
+    for(std::size_t k = i; k < j; ++k) {
+      const Record& r = records_[k];
+      const int l = longest_edge(r);
+      if(l == 3 || (r.key >> dropped_bits) != code || (r.key & 1)) return false;
+      const Cell* c = cells_.element(owner_position(r));
+      const int f = facet_index(r);
+      const void* a = &*c->vertex((f + 1 + (l + 1) % 3) & 3);
+      const void* b = &*c->vertex((f + 1 + (l + 2) % 3) & 3);
+      if(std::less<const void*>()(b, a)) std::swap(a, b);
+      if(k == i) { edge[0] = a; edge[1] = b; }
+      else if(a != edge[0] || b != edge[1]) return false;
+    }
+    std::sort(records_.begin() + i, records_.begin() + j,
+              [](const Record& x, const Record& y) { return x.key < y.key; });
+    for(std::size_t k = i + 1; k < j; ++k)
+      if((records_[k].key >> 1) - (records_[k - 1].key >> 1) < 2) return false;
+    return true;
+  }
+
   Run_member make_member(const Record& r) const
   {
     const Cell* c = cells_.element(owner_position(r));
@@ -378,9 +424,18 @@ private:
       if(j - i > 1) runs.emplace_back(std::uint32_t(i), std::uint32_t(j));
       i = j;
     }
-    // ... then sorted in double when the bounds decide, exactly otherwise. The records of a
-    // run are scattered in memory: their geometry is read in chunks, in the memory order of
+    // ... then ordered from their keys when possible (the common case), else sorted in
+    // double when the bounds decide, exactly otherwise. The records of a run are scattered in
+    // memory: the geometry of the remaining runs is read in chunks, in the memory order of
     // their cells, which turns random reads into nearly sequential ones.
+    {
+      std::size_t kept = 0;
+      for(const auto& g : runs) {
+        in_runs_ += g.second - g.first;
+        if(!sort_run_by_keys(g.first, g.second)) runs[kept++] = g;
+      }
+      runs.resize(kept);
+    }
     std::vector<std::pair<Triangle_order_key_3, Record>> run;
     std::vector<std::uint64_t> order, buffer;
     std::vector<std::uint32_t> record_of_slot;
@@ -419,7 +474,6 @@ private:
           for(std::size_t k = i; k < j; ++k) records_[k] = run[k - i].second;
           exactly_sorted_ += j - i;
         }
-        in_runs_ += j - i;
       }
       g0 = g1;
     }

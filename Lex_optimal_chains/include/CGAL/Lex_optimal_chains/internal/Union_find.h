@@ -44,6 +44,16 @@ public:
     return x;
   }
 
+  // Hints that `find(x)` will be called soon (the parent array is read at random).
+  void prefetch(Index x) const
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(parent_.data() + x);
+#else
+    (void)x;
+#endif
+  }
+
   // Links the two roots `a` and `b` (which must be roots) and returns the new root.
   Index link_roots(Index a, Index b)
   {
