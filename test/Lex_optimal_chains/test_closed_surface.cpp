@@ -20,6 +20,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <random>
 #include <set>
 #include <sstream>
@@ -209,6 +210,31 @@ int main(int argc, char** argv)
     check_mesh(m, rk, kitten);
     std::cout << "kitten: " << rk.mesh_faces << " faces, " << rk.components << " component(s), genus " << rk.genus << "\n";
     assert(rk.components == 1);
+
+    // sphere_20k.xyz has non-manifold places: the number of split edges equals the number of
+    // Delaunay edges in more than two facets of the optimal cycle, counted by brute force
+    std::vector<Point> sphere;
+    const bool read_sphere = CGAL::IO::read_points(data + "/points_3/sphere_20k.xyz", std::back_inserter(sphere));
+    assert(read_sphere);
+    const LOC::Closed_surface_report rs = reconstruct(sphere, m);
+    check_mesh(m, rs, sphere);
+    DT dt(sphere.begin(), sphere.end());
+    std::vector<DT::Facet> facets;
+    CGAL::lex_optimal_closed_surface(dt, std::back_inserter(facets));
+    std::map<std::pair<Point, Point>, int> edge_facets;
+    for(const DT::Facet& f : facets)
+      for(int a = 1; a < 4; ++a)
+        for(int b = a + 1; b < 4; ++b) {
+          Point p = f.first->vertex((f.second + a) & 3)->point(), q = f.first->vertex((f.second + b) & 3)->point();
+          if(q < p) std::swap(p, q);
+          ++edge_facets[std::make_pair(p, q)];
+        }
+    std::size_t split_edges = 0;
+    for(const auto& e : edge_facets) split_edges += e.second > 2;
+    std::cout << "sphere_20k: " << rs.non_manifold_edges << " split edges (brute force " << split_edges << "), "
+              << rs.non_manifold_vertices << " split vertices\n";
+    assert(rs.non_manifold_edges == split_edges && split_edges > 0);
+    assert(facets.size() == rs.mesh_faces);
   } else {
     std::cout << "no data directory given: the genus-2 and kitten checks are skipped\n";
   }

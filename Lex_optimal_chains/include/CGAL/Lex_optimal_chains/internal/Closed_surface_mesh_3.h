@@ -100,65 +100,77 @@ public:
       table_[h] = Slot{key, std::uint32_t(k)};
     }
 
-    twin_.assign(3 * nf, 0);
-    for(std::size_t k = 0; k < nf; ++k)
-      for(int e = 0; e < 3; ++e)
-        twin_[3 * k + e] = find_twin(k, e);
-
-    // umbrellas: corners (k, i) around a vertex linked through twins
-    Union_find corners(3 * nf);
+    // twins, searched once per pair
+    twin_.assign(3 * nf, UINT32_MAX);
     for(std::size_t k = 0; k < nf; ++k)
       for(int e = 0; e < 3; ++e) {
-        const std::uint32_t h = std::uint32_t(3 * k + e), o = twin_[h];
-        const std::uint32_t ko = o / 3, eo = o % 3;
-        corners.unite(h, 3 * ko + (eo + 1) % 3); // source of h = target of its twin
+        const std::uint32_t h = std::uint32_t(3 * k + e);
+        if(twin_[h] != UINT32_MAX) continue;
+        const std::uint32_t t = find_twin(k, e);
+        twin_[h] = t;
+        twin_[t] = h;
       }
-    // one vertex copy per umbrella, numbered in the canonical order of the facets
-    corner_vertex_.assign(3 * nf, 0);
-    std::vector<std::uint32_t> copy_of_root(3 * nf, UINT32_MAX);
+
+    // one vertex copy per umbrella (the cycle of corners around a vertex linked by twins),
+    // numbered in the canonical order of the facets
+    corner_vertex_.assign(3 * nf, UINT32_MAX);
+    std::vector<std::uint32_t> first_corner; // of each copy
     for(std::uint32_t rank = 0; rank < nf; ++rank)
       for(std::uint32_t c = 3 * by_rank_[rank]; c < 3 * by_rank_[rank] + 3; ++c) {
-        const std::uint32_t r = corners.find(c);
-        if(copy_of_root[r] == UINT32_MAX) {
-          copy_of_root[r] = std::uint32_t(copies_.size());
-          copies_.push_back(vertex(c));
-        }
-        corner_vertex_[c] = copy_of_root[r];
+        if(corner_vertex_[c] != UINT32_MAX) continue;
+        const std::uint32_t id = std::uint32_t(copies_.size());
+        copies_.push_back(vertex(c));
+        first_corner.push_back(c);
+        std::uint32_t x = c;
+        do {
+          corner_vertex_[x] = id;
+          x = next_corner_around_vertex(x);
+        } while(x != c);
       }
 
     // statistics
     stats_.vertices = copies_.size();
     stats_.faces = nf;
-    std::vector<const Vertex*> copied(copies_.size());
-    for(std::size_t i = 0; i < copies_.size(); ++i) copied[i] = &*copies_[i];
-    std::sort(copied.begin(), copied.end());
-    for(std::size_t i = 1; i < copied.size(); ++i)
-      if(copied[i] == copied[i - 1] && (i < 2 || copied[i - 2] != copied[i])) ++stats_.non_manifold_vertices;
-
-    // an edge of the triangulation split in several mesh edges joins the same two copies'
-    // originals twice or more; copies are numbered, so an edge is a pair of 32-bit numbers
-    std::vector<std::uint32_t> original(copies_.size());
-    {
-      std::vector<std::pair<const Vertex*, std::uint32_t>> order(copies_.size());
-      for(std::uint32_t i = 0; i < copies_.size(); ++i) order[i] = std::make_pair(&*copies_[i], std::uint32_t(i));
-      std::sort(order.begin(), order.end());
-      std::uint32_t id = 0;
-      for(std::size_t i = 0; i < order.size(); ++i) {
-        if(i > 0 && order[i].first != order[i - 1].first) ++id;
-        original[order[i].second] = id;
+    // vertices split in several copies
+    std::vector<std::pair<const Vertex*, std::uint32_t>> by_vertex(copies_.size());
+    for(std::uint32_t i = 0; i < copies_.size(); ++i) by_vertex[i] = std::make_pair(&*copies_[i], i);
+    std::sort(by_vertex.begin(), by_vertex.end());
+    std::vector<bool> split(copies_.size(), false);
+    for(std::size_t i = 1; i < by_vertex.size(); ++i)
+      if(by_vertex[i].first == by_vertex[i - 1].first) {
+        if(!split[by_vertex[i - 1].second]) ++stats_.non_manifold_vertices;
+        split[by_vertex[i].second] = split[by_vertex[i - 1].second] = true;
       }
+    // edges split in several mesh edges: a vertex u sees the other end v of such an edge
+    // twice among its outgoing half-edges (in one umbrella, or across its umbrellas); each
+    // edge is counted at its end of lower address
+    std::vector<const Vertex*> around;
+    std::vector<std::pair<const Vertex*, const Vertex*>> across;
+    auto count_repeated = [this](std::vector<const Vertex*>& v, const Vertex* u) {
+      std::sort(v.begin(), v.end());
+      for(std::size_t i = 1; i < v.size(); ++i)
+        if(v[i] == v[i - 1] && (i < 2 || v[i - 2] != v[i]) && std::less<const Vertex*>()(u, v[i]))
+          ++stats_.non_manifold_edges;
+    };
+    for(std::uint32_t id = 0; id < copies_.size(); ++id) {
+      const Vertex* u = &*copies_[id];
+      around.clear();
+      std::uint32_t x = first_corner[id];
+      do {
+        around.push_back(&*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
+        x = next_corner_around_vertex(x);
+      } while(x != first_corner[id]);
+      if(!split[id]) count_repeated(around, u);
+      else for(const Vertex* v : around) across.emplace_back(u, v);
     }
-    std::vector<std::uint64_t> edges;
-    edges.reserve(3 * nf / 2);
-    for(std::uint32_t h = 0; h < 3 * nf; ++h)
-      if(h < twin_[h]) {
-        const std::uint64_t a = original[corner_vertex_[h]];
-        const std::uint64_t b = original[corner_vertex_[3 * (h / 3) + (h % 3 + 1) % 3]];
-        edges.push_back(((std::min)(a, b) << 32) | (std::max)(a, b));
-      }
-    std::sort(edges.begin(), edges.end());
-    for(std::size_t i = 1; i < edges.size(); ++i)
-      if(edges[i] == edges[i - 1] && (i < 2 || edges[i - 2] != edges[i])) ++stats_.non_manifold_edges;
+    std::sort(across.begin(), across.end());
+    for(std::size_t i = 0; i < across.size();) {
+      std::size_t j = i;
+      around.clear();
+      while(j < across.size() && across[j].first == across[i].first) around.push_back(across[j++].second);
+      count_repeated(around, across[i].first);
+      i = j;
+    }
 
     Union_find components(nf);
     for(std::uint32_t h = 0; h < 3 * nf; ++h) components.unite(h / 3, twin_[h] / 3);
@@ -251,6 +263,10 @@ private:
   }
 
   bool is_inside(Cell_handle c) const { return inside_[cells_.index(&*c)]; }
+
+  // The corner after `c` around its vertex: the twin of the half-edge that enters the vertex
+  // in the facet of `c` starts at that vertex in the next facet.
+  std::uint32_t next_corner_around_vertex(std::uint32_t c) const { return twin_[3 * (c / 3) + (c % 3 + 2) % 3]; }
 
   // DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
   Vertex_handle vertex(std::uint32_t c) const { return corners_[c]; }
