@@ -164,6 +164,28 @@ int main(int argc, char** argv)
     assert(r.components == 1 && r.genus == 1 && euler_genus(m) == 1);
   }
 
+  // --- the surface of a cube sampled on an integer grid: massive exact ties of the order and
+  //     co-spherical Delaunay configurations; the output must still be closed, valid and
+  //     independent of the input order
+  {
+    std::vector<Point> pts;
+    const int g = 24;
+    for(int i = 0; i <= g; ++i)
+      for(int j = 0; j <= g; ++j)
+        for(int k = 0; k <= g; ++k)
+          if(i == 0 || j == 0 || k == 0 || i == g || j == g || k == g) pts.emplace_back(i, j, k);
+    const LOC::Closed_surface_report r = reconstruct(pts, m, LOC::parameters::interior_points(std::vector<Point>{Point(g / 2.0 + 0.1, g / 2.0 + 0.2, g / 2.0 + 0.3)}));
+    check_mesh(m, r, pts);
+    std::cout << "grid cube: " << r.mesh_faces << " faces, genus " << r.genus << ", " << r.components << " component(s), "
+              << r.number_of_exactly_ordered_triangles << " triangles ordered exactly\n";
+    assert(r.components == 1 && r.genus == 0 && r.number_of_exactly_ordered_triangles > 0);
+    std::vector<Point> shuffled = pts;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(11));
+    Mesh m2;
+    reconstruct(shuffled, m2, LOC::parameters::interior_points(std::vector<Point>{Point(g / 2.0 + 0.1, g / 2.0 + 0.2, g / 2.0 + 0.3)}));
+    assert(as_off(m) == as_off(m2));
+  }
+
   // --- two spheres: one interior point per sphere gives two components; one gives one ------------
   {
     std::vector<Point> pts = sample_sphere(6000, Point(0, 0, 0), 1.0, 0.001);

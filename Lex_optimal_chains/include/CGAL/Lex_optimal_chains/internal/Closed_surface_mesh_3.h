@@ -12,6 +12,7 @@
 // by twins) gets its own copy of the vertex.
 
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Union_find.h>
 
 #include <CGAL/assertions.h>
@@ -65,15 +66,15 @@ public:
     // around edges reads nearby entries; `by_rank_` keeps the given (canonical) order for the
     // numbering of the output.
     {
-      std::vector<std::pair<std::uint32_t, std::uint32_t>> order(nf);
+      std::vector<std::uint64_t> order(nf), buffer;
       for(std::size_t k = 0; k < nf; ++k)
-        order[k] = std::make_pair(facet_key(facets[k].first, facets[k].second), std::uint32_t(k));
-      std::sort(order.begin(), order.end());
+        order[k] = (std::uint64_t(facet_key(facets[k].first, facets[k].second)) << 32) | k;
+      radix_sort_high_words(order, buffer);
       facets_.resize(nf);
       by_rank_.resize(nf);
       for(std::size_t k = 0; k < nf; ++k) {
-        facets_[k] = facets[order[k].second];
-        by_rank_[order[k].second] = std::uint32_t(k);
+        facets_[k] = facets[std::uint32_t(order[k])];
+        by_rank_[std::uint32_t(order[k])] = std::uint32_t(k);
       }
     }
     // corners: the outward vertices of each facet, rotated to start at the lexicographically
@@ -102,7 +103,13 @@ public:
 
     // twins, searched once per pair
     twin_.assign(3 * nf, UINT32_MAX);
-    for(std::size_t k = 0; k < nf; ++k)
+    for(std::size_t k = 0; k < nf; ++k) {
+      // the cells met first when turning around the edges of facets ahead are fetched early
+      if(k + 16 < nf) prefetch(&*facets_[k + 16].first);
+      if(k + 8 < nf) {
+        const Facet& f = facets_[k + 8];
+        for(int i = 1; i < 4; ++i) prefetch(&*f.first->neighbor((f.second + i) & 3));
+      }
       for(int e = 0; e < 3; ++e) {
         const std::uint32_t h = std::uint32_t(3 * k + e);
         if(twin_[h] != UINT32_MAX) continue;
@@ -110,22 +117,38 @@ public:
         twin_[h] = t;
         twin_[t] = h;
       }
+    }
 
     // one vertex copy per umbrella (the cycle of corners around a vertex linked by twins),
     // numbered in the canonical order of the facets
     corner_vertex_.assign(3 * nf, UINT32_MAX);
     std::vector<std::uint32_t> first_corner; // of each copy
+    std::vector<std::uint32_t> repeated;     // repeated neighbors of lower address, per copy
+    std::vector<const Vertex*> around;
+    // number of vertices of higher address than `u` that appear twice or more in `v`
+    auto count_repeated = [](std::vector<const Vertex*>& v, const Vertex* u) {
+      std::sort(v.begin(), v.end());
+      std::size_t n = 0;
+      for(std::size_t i = 1; i < v.size(); ++i)
+        if(v[i] == v[i - 1] && (i < 2 || v[i - 2] != v[i]) && std::less<const Vertex*>()(u, v[i])) ++n;
+      return n;
+    };
     for(std::uint32_t rank = 0; rank < nf; ++rank)
       for(std::uint32_t c = 3 * by_rank_[rank]; c < 3 * by_rank_[rank] + 3; ++c) {
         if(corner_vertex_[c] != UINT32_MAX) continue;
         const std::uint32_t id = std::uint32_t(copies_.size());
         copies_.push_back(vertex(c));
         first_corner.push_back(c);
+        // its neighbors: an edge split in several mesh edges shows as a repeated neighbor
+        const Vertex* u = &*copies_.back();
+        around.clear();
         std::uint32_t x = c;
         do {
           corner_vertex_[x] = id;
+          around.push_back(&*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
           x = next_corner_around_vertex(x);
         } while(x != c);
+        repeated.push_back(std::uint32_t(count_repeated(around, u)));
       }
 
     // statistics
@@ -142,33 +165,24 @@ public:
         split[by_vertex[i].second] = split[by_vertex[i - 1].second] = true;
       }
     // edges split in several mesh edges: a vertex u sees the other end v of such an edge
-    // twice among its outgoing half-edges (in one umbrella, or across its umbrellas); each
-    // edge is counted at its end of lower address
-    std::vector<const Vertex*> around;
+    // twice among its outgoing half-edges, in one umbrella (counted above) or across its
+    // umbrellas when u itself is split (counted here over all of u's umbrellas); each edge
+    // is counted at its end of lower address
     std::vector<std::pair<const Vertex*, const Vertex*>> across;
-    auto count_repeated = [this](std::vector<const Vertex*>& v, const Vertex* u) {
-      std::sort(v.begin(), v.end());
-      for(std::size_t i = 1; i < v.size(); ++i)
-        if(v[i] == v[i - 1] && (i < 2 || v[i - 2] != v[i]) && std::less<const Vertex*>()(u, v[i]))
-          ++stats_.non_manifold_edges;
-    };
     for(std::uint32_t id = 0; id < copies_.size(); ++id) {
-      const Vertex* u = &*copies_[id];
-      around.clear();
+      if(!split[id]) { stats_.non_manifold_edges += repeated[id]; continue; }
       std::uint32_t x = first_corner[id];
       do {
-        around.push_back(&*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
+        across.emplace_back(&*copies_[id], &*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
         x = next_corner_around_vertex(x);
       } while(x != first_corner[id]);
-      if(!split[id]) count_repeated(around, u);
-      else for(const Vertex* v : around) across.emplace_back(u, v);
     }
     std::sort(across.begin(), across.end());
     for(std::size_t i = 0; i < across.size();) {
       std::size_t j = i;
       around.clear();
       while(j < across.size() && across[j].first == across[i].first) around.push_back(across[j++].second);
-      count_repeated(around, across[i].first);
+      stats_.non_manifold_edges += count_repeated(around, across[i].first);
       i = j;
     }
 
@@ -263,6 +277,15 @@ private:
   }
 
   bool is_inside(Cell_handle c) const { return inside_[cells_.index(&*c)]; }
+
+  static void prefetch(const void* p)
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    (void)p;
+#endif
+  }
 
   // The corner after `c` around its vertex: the twin of the half-edge that enters the vertex
   // in the facet of `c` starts at that vertex in the next facet.

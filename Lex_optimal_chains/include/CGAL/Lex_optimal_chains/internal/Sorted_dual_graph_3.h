@@ -22,6 +22,7 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 
 #include <CGAL/Interval_nt.h>
@@ -110,19 +111,6 @@ inline void radix_sort_records(Dual_edge_record* begin, Dual_edge_record* end, i
     if(count[d] > 1 && shift > lowest_shift)
       radix_sort_records(begin + start, begin + start + count[d], shift - 8, lowest_shift);
     start += count[d];
-  }
-}
-
-// Sorts 64-bit words by their high 32 bits (LSD radix, 4 passes of 8 bits, stable).
-inline void radix_sort_high_words(std::vector<std::uint64_t>& v, std::vector<std::uint64_t>& buffer)
-{
-  buffer.resize(v.size());
-  for(int shift = 32; shift < 64; shift += 8) {
-    std::size_t count[257] = {0};
-    for(std::uint64_t x : v) ++count[((x >> shift) & 0xff) + 1];
-    for(int d = 0; d < 256; ++d) count[d + 1] += count[d];
-    for(std::uint64_t x : v) buffer[count[(x >> shift) & 0xff]++] = x;
-    v.swap(buffer);
   }
 }
 
