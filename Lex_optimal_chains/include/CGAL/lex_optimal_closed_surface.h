@@ -288,13 +288,17 @@ lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
 namespace Lex_optimal_chains {
 namespace internal {
 
-template <class Triangulation, class PolygonMesh, class NamedParameters>
-void reconstruct_in(Triangulation& dt, PolygonMesh& mesh, const NamedParameters& np,
+// Everything after the Delaunay triangulation of `points` (both freed here, as soon as
+// possible, for the peak memory).
+template <class Triangulation, class Point, class PolygonMesh, class NamedParameters>
+void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& mesh, const NamedParameters& np,
                     const std::function<bool(double)>& callback, Closed_surface_report& report,
                     Stopwatch& watch)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  std::vector<Point>().swap(points);
+  report.delaunay_seconds = watch.lap();
   std::vector<bool> inside;
   std::vector<typename Triangulation::Facet> facets = closed_surface_facets(dt, np, callback, 0.35, report, inside);
   watch.lap();
@@ -323,6 +327,7 @@ void reconstruct_in(Triangulation& dt, PolygonMesh& mesh, const NamedParameters&
   if(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false))
     std::cerr << "Lex_optimal_chains: surface extracted in " << extraction_seconds << " s, triangulation freed in "
               << clear_seconds << " s, mesh built in " << build_seconds << " s\n";
+  if(callback) callback(1.0);
 }
 
 } // namespace internal
@@ -404,20 +409,14 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
     typename DT::Lock_data_structure locks(box, 50);
     DT dt(pts.begin(), pts.end(), &locks);
     dt.set_lock_data_structure(nullptr);
-    std::vector<Point>().swap(pts);
-    report.delaunay_seconds = watch.lap();
-    Lex_optimal_chains::internal::reconstruct_in(dt, mesh, np, callback, report, watch);
-    if(callback) callback(1.0);
+    Lex_optimal_chains::internal::reconstruct_in(dt, pts, mesh, np, callback, report, watch);
     report.total_seconds = total.lap();
     return report;
   }
 #endif
   CGAL_USE(threads);
   Delaunay_triangulation_3<Kernel> dt(pts.begin(), pts.end());
-  std::vector<Point>().swap(pts);
-  report.delaunay_seconds = watch.lap();
-  Lex_optimal_chains::internal::reconstruct_in(dt, mesh, np, callback, report, watch);
-  if(callback) callback(1.0);
+  Lex_optimal_chains::internal::reconstruct_in(dt, pts, mesh, np, callback, report, watch);
   report.total_seconds = total.lap();
   return report;
 }

@@ -138,7 +138,8 @@ public:
     : dt_(dt), cells_(dt.tds().cells().begin(), dt.tds().cells().end())
   {
     if(cells_.size() >= (std::size_t(1) << 30))
-      throw Input_error(Input_error_code::TOO_FEW_POINTS, "triangulation too large (2^30 cells or more)");
+      throw Input_error(Input_error_code::TOO_LARGE,
+                        "the triangulation has 2^30 cells or more: split the points into tiles");
     auto t0 = std::chrono::steady_clock::now();
     build_records(progress);
     auto t1 = std::chrono::steady_clock::now();

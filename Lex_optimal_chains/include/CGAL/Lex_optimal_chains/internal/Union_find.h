@@ -67,13 +67,6 @@ public:
 
   Index unite(Index a, Index b) { return link_roots(find(a), find(b)); }
 
-  // Releases the memory of the parent array to the caller (for reuse as scratch space).
-  std::vector<Index> release_parents()
-  {
-    std::vector<std::uint8_t>().swap(rank_);
-    return std::move(parent_);
-  }
-
 private:
   std::vector<Index> parent_;
   std::vector<std::uint8_t> rank_;
