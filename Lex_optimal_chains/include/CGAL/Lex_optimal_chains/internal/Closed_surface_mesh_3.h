@@ -222,6 +222,9 @@ public:
     using halfedge_descriptor = typename GT::halfedge_descriptor;
     using face_descriptor = typename GT::face_descriptor;
 
+    reserve(mesh, static_cast<typename GT::vertices_size_type>(num_vertices(mesh) + points_.size()),
+            static_cast<typename GT::edges_size_type>(num_edges(mesh) + twin_.size() / 2),
+            static_cast<typename GT::faces_size_type>(num_faces(mesh) + by_rank_.size()));
     std::vector<vertex_descriptor> vd(points_.size());
     for(std::size_t i = 0; i < points_.size(); ++i) {
       vd[i] = add_vertex(mesh);

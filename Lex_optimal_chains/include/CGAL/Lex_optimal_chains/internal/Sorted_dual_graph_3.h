@@ -207,7 +207,14 @@ private:
     const Vertex_handle infinite = dt_.infinite_vertex();
     std::uint32_t pos = 0;
     const auto& container = dt_.tds().cells();
+    // the vertices of the cells a few steps ahead are fetched early
+    auto ahead = container.begin();
+    for(int i = 0; i < 8 && ahead != container.end(); ++i) ++ahead;
     for(auto it = container.begin(); it != container.end(); ++it, ++pos) {
+      if(ahead != container.end()) {
+        for(int i = 0; i < 4; ++i) prefetch(&*ahead->vertex(i));
+        ++ahead;
+      }
       if((pos & 0xfffff) == 0 && !progress(0.5 * double(pos) / double(cells_.size())))
         throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
       const Cell& c = *it;
@@ -296,25 +303,39 @@ private:
   // Sorts records [i, j) with double evaluations when their error bounds decide every
   // comparison (insertion sort: runs are short); returns false, leaving the records in some
   // order, when one comparison is undecided.
-  // Orders a run from the keys alone when it is the common case: certainly obtuse triangles
-  // with the same longest edge (so exactly the same R_B) whose codes of q differ by 2 or
-  // more. Reads one cell per record (the vertices of the longest edge); returns false
-  // otherwise.
-  bool sort_run_by_keys(std::size_t i, std::size_t j)
+  static void prefetch(const void* p)
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    CGAL_USE(p);
+#endif
+  }
+
+  // The longest edge of a record as a pair of vertices, or (null, null) if it is not known
+  // from the key pass. Reads the owner cell.
+  std::pair<const void*, const void*> longest_edge_vertices(const Record& r) const
+  {
+    const int l = longest_edge(r);
+    if(l == 3) return std::make_pair(nullptr, nullptr);
+    const Cell* c = cells_.element(owner_position(r));
+    const int f = facet_index(r);
+    const void* a = &*c->vertex((f + 1 + (l + 1) % 3) & 3);
+    const void* b = &*c->vertex((f + 1 + (l + 2) % 3) & 3);
+    if(std::less<const void*>()(b, a)) std::swap(a, b);
+    return std::make_pair(a, b);
+  }
+
+  // Orders the run [i, j) from the keys alone when it is the common case: certainly obtuse
+  // triangles with the same longest edge (so exactly the same R_B), whose codes of q differ
+  // by 2 or more; `edges` are their longest edges. Returns false otherwise.
+  bool sort_run_by_keys(std::size_t i, std::size_t j, const std::pair<const void*, const void*>* edges)
   {
     const std::uint64_t code = records_[i].key >> dropped_bits;
-    const void* edge[2] = {nullptr, nullptr};
     for(std::size_t k = i; k < j; ++k) {
       const Record& r = records_[k];
-      const int l = longest_edge(r);
-      if(l == 3 || (r.key >> dropped_bits) != code || (r.key & 1)) return false;
-      const Cell* c = cells_.element(owner_position(r));
-      const int f = facet_index(r);
-      const void* a = &*c->vertex((f + 1 + (l + 1) % 3) & 3);
-      const void* b = &*c->vertex((f + 1 + (l + 2) % 3) & 3);
-      if(std::less<const void*>()(b, a)) std::swap(a, b);
-      if(k == i) { edge[0] = a; edge[1] = b; }
-      else if(a != edge[0] || b != edge[1]) return false;
+      if(edges[k - i].first == nullptr || edges[k - i] != edges[0] || (r.key >> dropped_bits) != code || (r.key & 1))
+        return false;
     }
     std::sort(records_.begin() + i, records_.begin() + j,
               [](const Record& x, const Record& y) { return x.key < y.key; });
@@ -416,40 +437,49 @@ private:
     }
     // ... then ordered from their keys when possible (the common case), else sorted in
     // double when the bounds decide, exactly otherwise. The records of a run are scattered in
-    // memory: the geometry of the remaining runs is read in chunks, in the memory order of
-    // their cells, which turns random reads into nearly sequential ones.
-    {
-      std::size_t kept = 0;
-      for(const auto& g : runs) {
-        in_runs_ += g.second - g.first;
-        if(!sort_run_by_keys(g.first, g.second)) runs[kept++] = g;
-      }
-      runs.resize(kept);
-    }
+    // memory: their cells are read in chunks, in memory order (a radix sort of the positions),
+    // which turns random reads into nearly sequential ones.
     std::vector<std::pair<Triangle_order_key_3, Record>> run;
     std::vector<std::uint64_t> order, buffer;
     std::vector<std::uint32_t> record_of_slot;
-    std::vector<Run_member> members; // a chunk's members, run after run
+    std::vector<std::pair<const void*, const void*>> edges; // a chunk's longest edges, run after run
+    std::vector<Run_member> members;                        // a chunk's members, run after run
+    std::vector<std::size_t> undecided;                     // runs of the chunk not ordered by keys
     constexpr std::size_t chunk = std::size_t(1) << 16;
-    for(std::size_t g0 = 0; g0 < runs.size();) {
-      std::size_t g1 = g0, count = 0;
-      while(g1 < runs.size() && (count == 0 || count + (runs[g1].second - runs[g1].first) <= chunk))
-        count += runs[g1].second - runs[g1].first, ++g1;
+    // reads `read(slot, record)` for the slots of the runs `which` of a chunk, in memory order
+    auto gather = [&](const std::vector<std::size_t>& which, auto&& read) {
       order.clear();
       record_of_slot.clear();
-      for(std::size_t g = g0; g < g1; ++g)
+      for(std::size_t g : which)
         for(std::uint32_t k = runs[g].first; k < runs[g].second; ++k) {
           order.push_back((std::uint64_t(owner_position(records_[k])) << 32) | record_of_slot.size());
           record_of_slot.push_back(k);
         }
       radix_sort_high_words(order, buffer);
-      members.resize(count);
-      for(std::uint64_t o : order) {
-        const std::uint32_t slot = std::uint32_t(o);
-        members[slot] = make_member(records_[record_of_slot[slot]]);
-      }
-      std::size_t first_slot = 0;
+      for(std::uint64_t o : order) read(std::uint32_t(o), records_[record_of_slot[std::uint32_t(o)]]);
+    };
+    std::vector<std::size_t> all;
+    for(std::size_t g0 = 0; g0 < runs.size();) {
+      std::size_t g1 = g0, count = 0;
+      while(g1 < runs.size() && (count == 0 || count + (runs[g1].second - runs[g1].first) <= chunk))
+        count += runs[g1].second - runs[g1].first, ++g1;
+      all.clear();
+      for(std::size_t g = g0; g < g1; ++g) all.push_back(g);
+      edges.resize(count);
+      gather(all, [&](std::uint32_t slot, const Record& r) { edges[slot] = longest_edge_vertices(r); });
+      undecided.clear();
+      std::size_t slot = 0;
       for(std::size_t g = g0; g < g1; ++g) {
+        in_runs_ += runs[g].second - runs[g].first;
+        if(!sort_run_by_keys(runs[g].first, runs[g].second, edges.data() + slot)) undecided.push_back(g);
+        slot += runs[g].second - runs[g].first;
+      }
+      std::size_t needed = 0;
+      for(std::size_t g : undecided) needed += runs[g].second - runs[g].first;
+      members.resize(needed);
+      gather(undecided, [&](std::uint32_t s, const Record& r) { members[s] = make_member(r); });
+      std::size_t first_slot = 0;
+      for(std::size_t g : undecided) {
         const std::size_t i = runs[g].first, j = runs[g].second;
         Run_member* m = members.data() + first_slot;
         first_slot += j - i;
