@@ -50,12 +50,12 @@ Automatic_interior most_persistent_void(const Graph& graph, const std::vector<st
   const std::size_t n = graph.number_of_cells();
   constexpr std::uint32_t unborn = std::numeric_limits<std::uint32_t>::max();
   Union_find sets(n);
-  std::vector<std::uint32_t> birth(n, unborn);      // per root: scan index at birth
-  std::vector<std::uint32_t> birth_cell(n, unborn); // per root: the cell it was born through
+  // per root: scan index of the record at its birth; the component holds (at least) one of
+  // the two cells of that record, which represents it
+  std::vector<std::uint32_t> birth(n, unborn);
   std::uint32_t infinite_root = infinite_cells.front();
   for(std::uint32_t c : infinite_cells) infinite_root = sets.unite(infinite_root, c);
   birth[infinite_root] = 0;
-  birth_cell[infinite_root] = infinite_root;
 
   Automatic_interior best;
   bool found = false;
@@ -71,8 +71,8 @@ Automatic_interior most_persistent_void(const Graph& graph, const std::vector<st
     const std::uint32_t scan = std::uint32_t(t + 1);
     std::uint32_t a = sets.find(Graph::owner_position(r));
     std::uint32_t b = sets.find(Graph::other_position(r));
-    if(birth[a] == unborn) { birth[a] = scan; birth_cell[a] = Graph::owner_position(r); }
-    if(birth[b] == unborn) { birth[b] = scan; birth_cell[b] = Graph::other_position(r); }
+    if(birth[a] == unborn) birth[a] = scan;
+    if(birth[b] == unborn) birth[b] = scan;
     if(a == b) continue;
     // the younger one dies
     const bool a_younger = birth[a] > birth[b] || (birth[a] == birth[b] && a > b);
@@ -81,14 +81,14 @@ Automatic_interior most_persistent_void(const Graph& graph, const std::vector<st
     const double dies = key_value(r.key);
     const double persistence = dies > 0 ? born / dies : std::numeric_limits<double>::infinity();
     if(!found || persistence > best.persistence) {
-      best.cell = birth_cell[young];
+      const auto& born_with = records[m - birth[young]];
+      best.cell = sets.find(Graph::owner_position(born_with)) == young ? Graph::owner_position(born_with)
+                                                                       : Graph::other_position(born_with);
       best.persistence = persistence;
       found = true;
     }
-    const std::uint32_t old_birth = birth[old], old_cell = birth_cell[old];
-    const std::uint32_t root = sets.link_roots(a, b);
-    birth[root] = old_birth;
-    birth_cell[root] = old_cell;
+    const std::uint32_t old_birth = birth[old];
+    birth[sets.link_roots(a, b)] = old_birth;
   }
   if(!found)
     throw Input_error(Input_error_code::NO_INTERIOR_FOUND,
