@@ -155,7 +155,6 @@ public:
   double sort_seconds() const { return sort_seconds_; }
   double repair_seconds() const { return repair_seconds_; }
 
-  const Triangulation& triangulation() const { return dt_; }
   std::size_t number_of_cells() const { return cells_.size(); }
   // records sorted increasingly along the triangle order
   const std::vector<Record>& records() const { return records_; }
