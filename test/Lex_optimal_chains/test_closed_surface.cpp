@@ -158,6 +158,28 @@ int main(int argc, char** argv)
   // --- torus: genus 1 ----------------------------------------------------------------------------
   {
     const std::vector<Point> pts = sample_torus(30000, 1.0, 0.35, 0.001);
+    {
+      // Algorithm 8 over all triangles equals Algorithm 8 over the spanning tree of the
+      // persistence pass followed by the scan of the triangles between inside and outside
+      DT dt(pts.begin(), pts.end());
+      namespace LI = LOC::internal;
+      LI::Sorted_dual_graph_3<DT> graph(dt, [](double) { return true; });
+      std::vector<DT::Cell_handle> hull;
+      dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
+      std::vector<std::uint32_t> sinks;
+      for(const auto& c : hull) sinks.push_back(graph.position(c));
+      std::sort(sinks.begin(), sinks.end());
+      std::vector<std::uint32_t> tree;
+      const LI::Automatic_interior a = LI::most_persistent_void(graph, sinks, tree);
+      assert(tree.size() + 1 == graph.number_of_cells() - sinks.size() + 1); // a spanning tree
+      auto always = [](double) { return true; };
+      std::vector<bool> inside_full, inside_tree;
+      const auto full = LI::lexicographic_closed_cut(graph, std::vector<std::uint32_t>{a.cell}, sinks, inside_full, always);
+      const auto fast = LI::lexicographic_closed_cut_from_tree(graph, tree, a.cell, sinks, inside_tree, always);
+      assert(inside_full == inside_tree && full.size() == fast.size());
+      for(std::size_t i = 0; i < full.size(); ++i) assert(full[i].owner == fast[i].owner && full[i].other == fast[i].other);
+      std::cout << "torus: the cut from the spanning tree equals Algorithm 8 (" << full.size() << " facets)\n";
+    }
     const LOC::Closed_surface_report r = reconstruct(pts, m);
     check_mesh(m, r, pts);
     std::cout << "torus: " << r.mesh_faces << " faces, " << r.components << " component(s), genus " << r.genus << "\n";

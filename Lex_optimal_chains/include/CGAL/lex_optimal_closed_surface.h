@@ -181,9 +181,12 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     if(std::binary_search(sinks.begin(), sinks.end(), s))
       throw Input_error(Input_error_code::CONFLICTING_CONSTRAINTS,
                         "an interior point and an exterior point lie in the same Delaunay cell");
+  const Stage_progress cut_progress{&callback, progress_from + 0.6 * span, progress_from + 0.8 * span};
+  std::vector<Dual_edge_record> cut;
   if(sources.empty()) {
     const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
-    const Automatic_interior a = most_persistent_void(graph, infinite);
+    std::vector<std::uint32_t> spanning_tree;
+    const Automatic_interior a = most_persistent_void(graph, sinks, spanning_tree);
     report.automatic_interior = true;
     report.interior_persistence = a.persistence;
     if(!(a.persistence >= minimum)) {
@@ -193,14 +196,14 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
           << "surface; give an interior point";
       throw Input_error(Input_error_code::NO_INTERIOR_FOUND, msg.str());
     }
-    sources.push_back(a.cell);
     if(verbose)
       std::cerr << "Lex_optimal_chains: automatic interior cell, persistence " << a.persistence << "\n";
+    // the Kruskal pass of the persistence also gave the spanning tree: Algorithm 8 needs no
+    // second pass over all the triangles
+    cut = lexicographic_closed_cut_from_tree(graph, spanning_tree, a.cell, sinks, inside, cut_progress);
+  } else {
+    cut = lexicographic_closed_cut(graph, sources, sinks, inside, cut_progress);
   }
-
-  const std::vector<Dual_edge_record> cut =
-    lexicographic_closed_cut(graph, sources, sinks, inside,
-                             Stage_progress{&callback, progress_from + 0.6 * span, progress_from + 0.8 * span});
   std::vector<typename Triangulation::Facet> facets;
   facets.reserve(cut.size());
   for(const Dual_edge_record& r : cut) {

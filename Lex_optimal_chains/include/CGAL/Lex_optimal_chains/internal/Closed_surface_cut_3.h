@@ -43,8 +43,11 @@ struct Automatic_interior
 // (elder rule); the infinite component is the oldest. The cell through which the most
 // persistent finite component was born, measured by the ratio of R_B^2 at birth and at
 // death, is the interior. Exact ties are resolved by the order itself (the first born wins).
+// `spanning_tree` receives the records that united two components, in decreasing order: the
+// maximum spanning tree of the dual graph with the sinks contracted.
 template <class Graph>
-Automatic_interior most_persistent_void(const Graph& graph, const std::vector<std::uint32_t>& infinite_cells)
+Automatic_interior most_persistent_void(const Graph& graph, const std::vector<std::uint32_t>& sinks,
+                                        std::vector<std::uint32_t>& spanning_tree)
 {
   const auto& records = graph.records();
   const std::size_t n = graph.number_of_cells();
@@ -53,9 +56,10 @@ Automatic_interior most_persistent_void(const Graph& graph, const std::vector<st
   // per root: scan index of the record at its birth; the component holds (at least) one of
   // the two cells of that record, which represents it
   std::vector<std::uint32_t> birth(n, unborn);
-  std::uint32_t infinite_root = infinite_cells.front();
-  for(std::uint32_t c : infinite_cells) infinite_root = sets.unite(infinite_root, c);
-  birth[infinite_root] = 0;
+  std::uint32_t sink_root = sinks.front();
+  for(std::uint32_t c : sinks) sink_root = sets.unite(sink_root, c);
+  birth[sink_root] = 0;
+  spanning_tree.clear();
 
   Automatic_interior best;
   bool found = false;
@@ -89,6 +93,7 @@ Automatic_interior most_persistent_void(const Graph& graph, const std::vector<st
     }
     const std::uint32_t old_birth = birth[old];
     birth[sets.link_roots(a, b)] = old_birth;
+    spanning_tree.push_back(std::uint32_t(m - 1 - t));
   }
   if(!found)
     throw Input_error(Input_error_code::NO_INTERIOR_FOUND,
@@ -122,6 +127,43 @@ std::vector<Dual_edge_record> lexicographic_closed_cut(const Graph& graph,
   inside.assign(graph.number_of_cells(), false);
   for(std::uint32_t c = 0; c < graph.number_of_cells(); ++c)
     inside[c] = cut.is_on_source_side(c);
+  return result;
+}
+
+// The same result as `lexicographic_closed_cut()` from the maximum spanning tree of the dual
+// graph (sinks contracted, edges in decreasing order) and one source cell: Algorithm 8 only
+// cuts, among the tree edges, the smallest one on the tree path from the source to the sinks,
+// and its final source component is the source's side of the tree without that edge (the
+// forest it builds is the tree minus that edge). So Algorithm 8 run on the tree edges alone
+// gives the inside cells, and the cut is every record between an inside and an outside cell.
+template <class Graph, class Progress>
+std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(const Graph& graph,
+                                                                 const std::vector<std::uint32_t>& spanning_tree,
+                                                                 std::uint32_t source,
+                                                                 const std::vector<std::uint32_t>& sinks,
+                                                                 std::vector<bool>& inside,
+                                                                 const Progress& progress)
+{
+  const auto& records = graph.records();
+  Lexicographic_min_cut cut(graph.number_of_cells(), std::vector<std::uint32_t>{source}, sinks);
+  for(std::size_t t = 0; t < spanning_tree.size(); ++t) {
+    if((t & 0xfffff) == 0 && !progress(0.5 * double(t) / double(spanning_tree.size())))
+      throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+    if(t + 16 < spanning_tree.size()) {
+      const auto& next = records[spanning_tree[t + 16]];
+      cut.prefetch(Graph::owner_position(next), Graph::other_position(next));
+    }
+    const auto& r = records[spanning_tree[t]];
+    cut.process(Graph::owner_position(r), Graph::other_position(r));
+  }
+  inside.assign(graph.number_of_cells(), false);
+  for(std::uint32_t c = 0; c < graph.number_of_cells(); ++c)
+    inside[c] = cut.is_on_source_side(c);
+  std::vector<Dual_edge_record> result;
+  for(std::size_t t = records.size(); t-- > 0;) {
+    const auto& r = records[t];
+    if(inside[Graph::owner_position(r)] != inside[Graph::other_position(r)]) result.push_back(r);
+  }
   return result;
 }
 
