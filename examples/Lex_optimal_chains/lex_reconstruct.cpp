@@ -20,6 +20,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -144,7 +145,8 @@ int main(int argc, char** argv)
       j["vertices"] = r.mesh_vertices;
       j["faces"] = r.mesh_faces;
       j["components"] = r.components;
-      j["boundary_edges"] = 0; // closed by construction; checked with CGAL::is_closed in the tests
+      j["boundary_edges"] = std::count_if(halfedges(mesh).begin(), halfedges(mesh).end(),
+                                          [&mesh](Mesh::Halfedge_index h) { return is_border(h, mesh); });
       j["non_manifold_vertices"] = r.non_manifold_vertices;
       j["non_manifold_edges"] = r.non_manifold_edges;
       j["closed"] = CGAL::is_closed(mesh);

@@ -171,7 +171,7 @@ int main(int argc, char** argv)
       std::sort(sinks.begin(), sinks.end());
       std::vector<std::uint32_t> tree;
       const LI::Automatic_interior a = LI::most_persistent_void(graph, sinks, tree);
-      assert(tree.size() + 1 == graph.number_of_cells() - sinks.size() + 1); // a spanning tree
+      assert(tree.size() == graph.number_of_cells() - sinks.size()); // a spanning tree (sinks contracted)
       auto always = [](double) { return true; };
       std::vector<bool> inside_full, inside_tree;
       const auto full = LI::lexicographic_closed_cut(graph, std::vector<std::uint32_t>{a.cell}, sinks, inside_full, always);

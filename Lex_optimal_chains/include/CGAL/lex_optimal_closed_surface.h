@@ -128,12 +128,14 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt, const Graph
 }
 
 // The common part: sorted dual graph, constraints, Algorithm 8. Returns the facets of the
-// optimal cycle, each as (inside cell, index), in decreasing order; fills `inside`.
+// optimal cycle, each as (inside cell, index), in decreasing order; fills `inside`, indexed
+// by the cell numbering it copies to `positions` when that is not null.
 template <class Triangulation, class NamedParameters>
 std::vector<typename Triangulation::Facet>
 closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
                       const std::function<bool(double)>& callback, double progress_from,
-                      Closed_surface_report& report, std::vector<bool>& inside)
+                      Closed_surface_report& report, std::vector<bool>& inside,
+                      Handle_index_map<typename Triangulation::Cell>* positions = nullptr)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -213,6 +215,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     else facets.emplace_back(owner->neighbor(j), owner->neighbor(j)->index(owner));
   }
   report.number_of_facets = facets.size();
+  if(positions != nullptr) *positions = graph.cell_positions();
   report.cut_seconds = watch.lap();
   if(verbose)
     std::cerr << "Lex_optimal_chains: cut " << facets.size() << " facets in " << report.cut_seconds << " s\n";
@@ -304,17 +307,16 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
   std::vector<Point>().swap(points);
   report.delaunay_seconds = watch.lap();
   std::vector<bool> inside;
-  std::vector<typename Triangulation::Facet> facets = closed_surface_facets(dt, np, callback, 0.35, report, inside);
-  watch.lap();
   std::unique_ptr<Closed_surface_mesh_3<Triangulation>> surface;
   {
-    // map cells to the positions used by `inside`
-    const Handle_index_map<typename Triangulation::Cell> positions(dt.tds().cells().begin(), dt.tds().cells().end());
+    Handle_index_map<typename Triangulation::Cell> positions; // of the cells, as used by `inside`
+    std::vector<typename Triangulation::Facet> facets =
+      closed_surface_facets(dt, np, callback, 0.35, report, inside, &positions);
+    watch.lap();
     surface.reset(new Closed_surface_mesh_3<Triangulation>(facets, positions, inside));
   }
   // the triangulation (ours) is freed before the mesh is built: peak memory
   const double extraction_seconds = watch.lap();
-  std::vector<typename Triangulation::Facet>().swap(facets);
   std::vector<bool>().swap(inside);
   dt.clear();
   const double clear_seconds = watch.lap();

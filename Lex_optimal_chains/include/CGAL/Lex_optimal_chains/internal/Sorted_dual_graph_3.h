@@ -156,6 +156,8 @@ public:
   double repair_seconds() const { return repair_seconds_; }
 
   std::size_t number_of_cells() const { return cells_.size(); }
+  // the numbering of the cells (positions) used by the records
+  const Handle_index_map<Cell>& cell_positions() const { return cells_; }
   // records sorted increasingly along the triangle order
   const std::vector<Record>& records() const { return records_; }
 

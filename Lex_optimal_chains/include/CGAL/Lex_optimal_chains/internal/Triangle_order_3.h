@@ -138,8 +138,6 @@ public:
     }
   }
 
-  const Triangle_coordinates_3& coordinates() const { return coordinates_; }
-
   friend Comparison_result compare(const Triangle_order_key_3& a, const Triangle_order_key_3& b)
   {
     if(a.filtered_ && b.filtered_) {
