@@ -12,6 +12,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_cut_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_mesh_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Kernel_traits.h>
@@ -66,28 +67,6 @@ struct Closed_surface_report
 };
 
 namespace internal {
-
-class Stopwatch
-{
-public:
-  double lap()
-  {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
-
-// Maps the progress of one stage to [from, to] of the user's callback.
-struct Stage_progress
-{
-  const std::function<bool(double)>* callback;
-  double from, to;
-  bool operator()(double x) const { return !*callback || (*callback)(from + (to - from) * x); }
-};
 
 // Cells (by position in the graph) that hold the constraint points.
 template <class Triangulation, class Graph, class PointRange>

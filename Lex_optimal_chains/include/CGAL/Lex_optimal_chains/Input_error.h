@@ -25,7 +25,13 @@ enum class Input_error_code
   NO_INTERIOR_FOUND,           ///< no interior point was given and none could be chosen
   TOO_LARGE,                   ///< the triangulation has 2^30 cells or more
   INVALID_GRAPH,               ///< a graph given to the generic min-cut is not valid
-  CANCELLED                    ///< the progress callback asked to stop
+  CANCELLED,                   ///< the progress callback asked to stop
+  OPEN_POLYLINE,               ///< a boundary polyline does not end where it starts
+  SELF_INTERSECTING_BOUNDARY,  ///< a boundary polyline repeats a vertex or crosses itself or another one
+  BOUNDARY_EDGE_NOT_IN_TRIANGULATION, ///< a boundary edge is not an edge of the Delaunay triangulation
+  BOUNDARY_NOT_A_CYCLE,        ///< the given boundary edges do not form a cycle
+  BOUNDARY_FAR_FROM_POINTS,    ///< a boundary polyline is farther from the points than their own extent
+  INVALID_CHAIN                ///< a triangle of a given chain is not a facet of the triangulation
 };
 
 /*!

@@ -18,6 +18,10 @@ enum interior_points_t { interior_points };
 enum exterior_points_t { exterior_points };
 enum number_of_threads_t { number_of_threads };
 enum minimum_interior_persistence_t { minimum_interior_persistence };
+enum coefficient_field_t { coefficient_field };
+enum relative_facets_t { relative_facets };
+enum remove_blocking_points_t { remove_blocking_points };
+enum drop_boundary_triangles_t { drop_boundary_triangles };
 
 } // namespace internal_np
 
@@ -49,6 +53,14 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(exterior_points)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(number_of_threads)
 /// Smallest persistence ratio accepted for an automatically chosen interior.
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(minimum_interior_persistence)
+/// Coefficients of the open-surface chains (`Coefficient_field::Z2` or `Coefficient_field::Q`).
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(coefficient_field)
+/// The triangles of a subcomplex \f$B\f$ (a range of `DT::Facet`): chains are relative to \f$B\f$.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(relative_facets)
+/// Removes the input points that keep a boundary edge out of the Delaunay triangulation.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(remove_blocking_points)
+/// Drops the triangles that touch a vertex of the boundary that is not an input point.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(drop_boundary_triangles)
 
 #undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
 

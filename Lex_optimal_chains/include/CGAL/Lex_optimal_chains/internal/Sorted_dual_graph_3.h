@@ -173,6 +173,21 @@ public:
   static int longest_edge(const Record& r) { return int(r.other >> 30); }
   static int facet_index(const Record& r) { return int(r.owner & 3); }
 
+  // The code (owner position << 2 | facet index) of the record of the finite facet (c, i),
+  // and whether the record's orientation (outward of its owner) is opposite to the facet's
+  // (outward of c). The owner is the finite cell of the facet, or the one of lower address
+  // if both are finite (as in build_records()).
+  std::pair<std::uint32_t, bool> record_code(Cell_handle c, int i) const
+  {
+    const Cell_handle n = c->neighbor(i);
+    bool c_owns;
+    if(dt_.is_infinite(c)) c_owns = false;
+    else if(dt_.is_infinite(n)) c_owns = true;
+    else c_owns = !std::less<const Cell*>()(&*n, &*c);
+    if(c_owns) return {(position(c) << 2) | std::uint32_t(i), false};
+    return {(position(n) << 2) | std::uint32_t(n->index(c)), true};
+  }
+
   Triangle_coordinates_3 coordinates(const Record& r) const
   {
     return facet_coordinates(cell(owner_position(r)), facet_index(r));

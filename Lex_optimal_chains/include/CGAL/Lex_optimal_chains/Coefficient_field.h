@@ -1,0 +1,32 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_COEFFICIENT_FIELD_H
+#define CGAL_LEX_OPTIMAL_CHAINS_COEFFICIENT_FIELD_H
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+The coefficients of the chains of the open-surface functions.
+
+With `Z2` a chain is a set of triangles: orientation is ignored and the optimal chain may be
+non-orientable (a Möbius strip). With `Q` chains are oriented: a triangle has a signed
+coefficient relative to an orientation, the optimal chain is oriented and its boundary is the
+given cycle with its orientation. Algorithms 10 and 11 of the thesis only add and subtract
+coefficients, so an integral input gives an integral result: rational coefficients are
+computed exactly as 64-bit integers (an overflow, which needs coefficients near
+\f$2^{62}\f$, throws `Input_error` with code `TOO_LARGE`). The optimum is linear in the
+input, so a rational input can be scaled by a common denominator.
+*/
+enum class Coefficient_field
+{
+  Z2, ///< the field with two elements: unoriented chains
+  Q   ///< the rationals: oriented chains (computed exactly with integers)
+};
+
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_COEFFICIENT_FIELD_H

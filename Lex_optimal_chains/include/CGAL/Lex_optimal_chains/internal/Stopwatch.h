@@ -1,0 +1,43 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_STOPWATCH_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_STOPWATCH_H
+
+// Stage timings and the mapping of a stage's progress to the user's callback.
+
+#include <chrono>
+#include <functional>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal {
+
+class Stopwatch
+{
+public:
+  // seconds since the previous lap (or the construction)
+  double lap()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// Maps the progress of one stage to [from, to] of the user's callback.
+struct Stage_progress
+{
+  const std::function<bool(double)>* callback;
+  double from, to;
+  bool operator()(double x) const { return !*callback || (*callback)(from + (to - from) * x); }
+};
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_STOPWATCH_H

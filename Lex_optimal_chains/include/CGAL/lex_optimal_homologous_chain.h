@@ -1,0 +1,326 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_HOMOLOGOUS_CHAIN_H
+#define CGAL_LEX_OPTIMAL_HOMOLOGOUS_CHAIN_H
+
+/// \file lex_optimal_homologous_chain.h
+/// Lexicographic optimal 2-chains of a 3D Delaunay triangulation homologous to a given chain,
+/// or bounded by a given 1-cycle, absolute or relative (thesis sections 4.5 and 4.6).
+
+#include <CGAL/Lex_optimal_chains/Coefficient_field.h>
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
+#include <CGAL/Lex_optimal_chains/internal/Homologous_chain_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Representative_chain_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cstdint>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+What an open-surface computation did: sizes, timings and the topology of the output. Fields
+that a function does not compute stay at zero.
+*/
+struct Open_surface_report
+{
+  std::size_t number_of_input_points = 0;        ///< points given (reconstruction only)
+  std::size_t number_of_boundary_vertices = 0;   ///< boundary vertices that are not input points (reconstruction only)
+  std::size_t number_of_removed_points = 0;      ///< input points removed so that the boundary is in the triangulation
+  std::size_t number_of_vertices = 0;            ///< vertices of the triangulation
+  std::size_t number_of_triangles = 0;           ///< finite facets of the triangulation (dual edges)
+  std::size_t number_of_triangles_in_close_runs = 0;   ///< triangles whose fast keys were too close to be ordered by them
+  std::size_t number_of_exactly_ordered_triangles = 0; ///< of those, triangles ordered by the exact comparator
+  std::size_t number_of_relative_triangles = 0;  ///< triangles of the subcomplex B
+  std::size_t number_of_swept_vertices = 0;      ///< vertices handled by Algorithm 11
+  std::size_t number_of_representative_triangles = 0; ///< triangles of the representative chain
+  std::size_t number_of_facets = 0;              ///< triangles of the optimal chain
+  std::size_t number_of_multiple_facets = 0;     ///< of those, triangles whose coefficient is not 1 or -1 (Q only)
+  double delaunay_seconds = 0;                   ///< time to build the Delaunay triangulation
+  double representative_seconds = 0;             ///< time of Algorithm 11
+  double order_seconds = 0;                      ///< time to sort the triangles
+  double optimal_chain_seconds = 0;              ///< time of Algorithm 10
+  double output_seconds = 0;                     ///< time to build the mesh
+  double total_seconds = 0;                      ///< time of the whole call
+  std::size_t mesh_vertices = 0;                 ///< vertices of the output mesh (reconstruction only)
+  std::size_t mesh_faces = 0;                    ///< faces of the output mesh (reconstruction only)
+  std::size_t dropped_triangles = 0;             ///< triangles dropped because they touch a boundary-only vertex
+  std::size_t non_manifold_vertices = 0;         ///< vertices duplicated to make the mesh manifold (reconstruction only)
+};
+
+namespace internal {
+
+// The finite facet of `dt` with vertices (a, b, c), as (cell, index), and true if (a, b, c)
+// is oriented outward of that cell; throws INVALID_CHAIN if it is not a finite facet.
+template <class Triangulation>
+std::pair<typename Triangulation::Facet, bool>
+oriented_facet(const Triangulation& dt, typename Triangulation::Vertex_handle a,
+               typename Triangulation::Vertex_handle b, typename Triangulation::Vertex_handle c)
+{
+  typename Triangulation::Cell_handle cell;
+  int i, j, k;
+  if(dt.is_infinite(a) || dt.is_infinite(b) || dt.is_infinite(c) || !dt.is_facet(a, b, c, cell, i, j, k))
+    throw Input_error(Input_error_code::INVALID_CHAIN, "a triangle of the chain is not a finite facet of the triangulation");
+  const int f = 6 - i - j - k;
+  // outward of `cell`: ((f+1)&3, (f+2)&3, (f+3)&3), the last two swapped when f is odd
+  int o[3] = {(f + 1) & 3, (f + 2) & 3, (f + 3) & 3};
+  if(f & 1) std::swap(o[1], o[2]);
+  // (i, j, k) is outward iff it is a rotation of o
+  const bool outward = (i == o[0] && j == o[1]) || (i == o[1] && j == o[2]) || (i == o[2] && j == o[0]);
+  return {typename Triangulation::Facet(cell, f), outward};
+}
+
+// Sorts the triangles, runs Algorithm 10 from the chain `gamma0` given on records, and writes
+// the optimal chain to `out` as (facet, coefficient) with a positive coefficient.
+template <class Arithmetic, class Triangulation, class Graph, class OutputIterator>
+void optimal_chain_on_graph(const Triangulation& dt, const Graph& graph,
+                            const Record_values<typename Arithmetic::Value>& gamma0,
+                            const Record_values<std::uint8_t>& relative,
+                            const std::function<bool(double)>& callback, double progress_from,
+                            OutputIterator out, Open_surface_report& report)
+{
+  std::vector<std::uint32_t> infinite;
+  {
+    std::vector<typename Triangulation::Cell_handle> hull;
+    dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
+    for(const auto& c : hull) infinite.push_back(graph.position(c));
+  }
+  const auto chain = lexicographic_homologous_chain<Arithmetic>(
+    graph, infinite, gamma0, relative, Stage_progress{&callback, progress_from, 1.0});
+  report.number_of_facets = chain.size();
+  for(const auto& entry : chain) {
+    const auto& r = graph.records()[entry.first];
+    const auto owner = graph.cell(Graph::owner_position(r));
+    const int j = Graph::facet_index(r);
+    const std::int64_t k = Arithmetic::to_integer(entry.second);
+    if(k != 1 && k != -1) ++report.number_of_multiple_facets;
+    if(k > 0) *out++ = std::make_pair(typename Triangulation::Facet(owner, j), k);
+    else *out++ = std::make_pair(typename Triangulation::Facet(owner->neighbor(j), owner->neighbor(j)->index(owner)), -k);
+  }
+}
+
+template <class Triangulation>
+void check_dimension(const Triangulation& dt)
+{
+  if(dt.dimension() < 3)
+    throw Input_error(dt.number_of_vertices() < 4 ? Input_error_code::TOO_FEW_POINTS : Input_error_code::DEGENERATE_POINT_SET,
+                      dt.number_of_vertices() < 4 ? "fewer than 4 distinct points: the triangulation has no tetrahedron"
+                                                  : "all points are coplanar: the triangulation has no tetrahedron");
+}
+
+// The part common to both public functions once Gamma0 is known as oriented triangles or
+// facets: sort, map Gamma0 and B to records, run Algorithm 10.
+template <class Arithmetic, class Triangulation, class NamedParameters, class AddGamma0, class OutputIterator>
+void optimal_chain(const Triangulation& dt, const NamedParameters& np, const AddGamma0& add_gamma0,
+                   const std::function<bool(double)>& callback, double progress_from, OutputIterator out,
+                   Open_surface_report& report)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Graph = Sorted_dual_graph_3<Triangulation>;
+  using Facet = typename Triangulation::Facet;
+  using Value = typename Arithmetic::Value;
+  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const double span = 1.0 - progress_from;
+  Stopwatch watch;
+  Graph graph(dt, Stage_progress{&callback, progress_from, progress_from + 0.7 * span});
+  report.number_of_vertices = dt.number_of_vertices();
+  report.number_of_triangles = graph.records().size();
+  report.number_of_exactly_ordered_triangles = graph.number_of_exactly_sorted_records();
+  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
+  report.order_seconds = watch.lap();
+  if(verbose)
+    std::cerr << "Lex_optimal_chains: ordered " << graph.records().size() << " triangles in " << report.order_seconds << " s\n";
+
+  Record_values<Value> gamma0(graph.number_of_cells());
+  add_gamma0([&](const Facet& f, std::int64_t k) {
+    if(dt.is_infinite(f))
+      throw Input_error(Input_error_code::INVALID_CHAIN, "a facet of the chain has the infinite vertex");
+    const auto code = graph.record_code(f.first, f.second);
+    const Value v = Arithmetic::from_integer(k);
+    gamma0.template add<Arithmetic>(code.first, code.second ? Arithmetic::negate(v) : v);
+  });
+  Record_values<std::uint8_t> relative(graph.number_of_cells());
+  const std::vector<Facet> no_facets;
+  // a copy: CGAL 5.5 returns the parameter by value, a reference to it would dangle
+  const auto relative_range = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::relative_facets), no_facets);
+  for(const Facet& f : relative_range) {
+    if(dt.is_infinite(f))
+      throw Input_error(Input_error_code::INVALID_CHAIN, "a facet of the subcomplex B has the infinite vertex");
+    relative.template add<Z2_arithmetic>(graph.record_code(f.first, f.second).first, 1);
+  }
+  report.number_of_relative_triangles = relative.values().size();
+  optimal_chain_on_graph<Arithmetic>(dt, graph, gamma0, relative, callback, progress_from + 0.7 * span, out, report);
+  report.optimal_chain_seconds = watch.lap();
+  if(verbose)
+    std::cerr << "Lex_optimal_chains: optimal chain of " << report.number_of_facets << " triangles in "
+              << report.optimal_chain_seconds << " s\n";
+}
+
+template <class NamedParameters>
+Coefficient_field coefficient_field_of(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, Lex_optimal_chains::internal_np::coefficient_field),
+                                      Coefficient_field::Q);
+}
+
+// Algorithm 11 then Algorithm 10 for the cycle given as (source, target) vertex pairs.
+template <class Arithmetic, class Triangulation, class EdgeRange, class NamedParameters, class OutputIterator>
+void optimal_chain_with_boundary(const Triangulation& dt, const EdgeRange& cycle, const NamedParameters& np,
+                                 const std::function<bool(double)>& callback, double progress_from,
+                                 OutputIterator out, Open_surface_report& report)
+{
+  using Representative = Representative_chain_3<Triangulation, Arithmetic>;
+  Stopwatch watch;
+  std::vector<typename Representative::Edge> edges;
+  for(const auto& e : cycle) edges.push_back({e.first, e.second, Arithmetic::from_integer(1)});
+  const Representative representative(dt, edges);
+  report.number_of_swept_vertices = representative.number_of_swept_vertices();
+  report.number_of_representative_triangles = representative.chain().size();
+  report.representative_seconds = watch.lap();
+  optimal_chain<Arithmetic>(dt, np, [&](const auto& add) {
+      for(const auto& t : representative.chain()) {
+        const auto f = oriented_facet(dt, t.vertices[0], t.vertices[1], t.vertices[2]);
+        add(f.first, f.second ? Arithmetic::to_integer(t.coefficient) : -Arithmetic::to_integer(t.coefficient));
+      }
+    }, callback, progress_from, out, report);
+}
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Computes the lexicographic optimal 2-chain homologous to `chain` in the Delaunay
+triangulation `dt` completed to \f$S^3\f$ by its infinite vertex, optionally relative to a
+subcomplex \f$B\f$ given by its triangles (Algorithm 10 of the thesis, with the augmented
+disjoint sets of Algorithm 9, on the dual graph; triangles ordered by Lemma 4.14).
+
+As \f$H_2(S^3) = 0\f$, in the absolute case this is the lexicographic minimal chain with the
+same boundary as `chain`. Relative to \f$B\f$, the result is the minimal chain that differs
+from `chain` by a boundary plus a chain of \f$B\f$: its boundary may move inside \f$B\f$,
+and it has no triangle of \f$B\f$.
+
+Chains are given and returned as pairs `(f, k)` of a `DT::Facet` `f = (c, i)` and an
+integer coefficient `k` of the triangle `c->vertex((i+1)&3), c->vertex((i+2)&3),
+c->vertex((i+3)&3)` (last two vertices swapped when `i` is odd), which is oriented outward of
+`c`. The output has positive coefficients (over Z2, all equal to 1), in decreasing triangle
+order.
+
+\tparam DT a `Delaunay_triangulation_3` whose points have `double` coordinates
+\param dt the triangulation; it is not modified
+\param chain a range of `std::pair<DT::Facet, std::int64_t>`, finite facets; a facet given
+twice has the sum of its coefficients
+\param out output iterator accepting `std::pair<DT::Facet, std::int64_t>`
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{coefficient_field}
+    \cgalParamDescription{the coefficients of the chains}
+    \cgalParamType{`Lex_optimal_chains::Coefficient_field`}
+    \cgalParamDefault{`Coefficient_field::Q` (oriented result)}
+  \cgalParamNEnd
+  \cgalParamNBegin{relative_facets}
+    \cgalParamDescription{the triangles of the subcomplex \f$B\f$; they are not dual edges}
+    \cgalParamType{a range of `DT::Facet`}
+    \cgalParamDefault{empty (absolute chains)}
+  \cgalParamNEnd
+  \cgalParamNBegin{callback}
+    \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels}
+    \cgalParamType{`std::function<bool(double)>`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{prints the stages and their timings to `std::cerr`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns a report; its triangulation, order and optimal chain fields are filled.
+\throws Lex_optimal_chains::Input_error on a triangulation of dimension below 3, or a facet
+with the infinite vertex in `chain` or in \f$B\f$.
+*/
+template <class DT, class ChainRange, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Open_surface_report
+lex_optimal_homologous_chain(const DT& dt, const ChainRange& chain, OutputIterator out,
+                             const NamedParameters& np = parameters::default_values())
+{
+  namespace LOC = Lex_optimal_chains;
+  const std::function<bool(double)> callback = parameters::choose_parameter(
+    parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  LOC::Open_surface_report report;
+  LOC::internal::Stopwatch total;
+  LOC::internal::check_dimension(dt);
+  auto add_chain = [&](const auto& add) { for(const auto& fk : chain) add(fk.first, std::int64_t(fk.second)); };
+  if(LOC::internal::coefficient_field_of(np) == LOC::Coefficient_field::Z2)
+    LOC::internal::optimal_chain<LOC::internal::Z2_arithmetic>(dt, np, add_chain, callback, 0.0, out, report);
+  else
+    LOC::internal::optimal_chain<LOC::internal::Integer_arithmetic>(dt, np, add_chain, callback, 0.0, out, report);
+  if(callback) callback(1.0);
+  report.total_seconds = total.lap();
+  return report;
+}
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Computes the lexicographic optimal 2-chain of the Delaunay triangulation `dt` bounded by the
+1-cycle `cycle`, optionally relative to a subcomplex \f$B\f$: a representative chain bounded
+by the cycle is found by Algorithm 11 of the thesis (a downward sweep of the cycle through
+the lower links of its highest vertices, heights compared along \f$(z, x, y)\f$), then made
+optimal by `lex_optimal_homologous_chain()`.
+
+\tparam DT a `Delaunay_triangulation_3` whose points have `double` coordinates
+\param dt the triangulation; it is not modified
+\param cycle a range of `std::pair<DT::Vertex_handle, DT::Vertex_handle>`: the edges of the
+cycle, each oriented from its first to its second vertex, with coefficient 1 (edges given
+twice add up). Over Q, a closed polyline \f$p_0 p_1 \dots p_n = p_0\f$ is the edges
+\f$(p_i, p_{i+1})\f$.
+\param out output iterator accepting `std::pair<DT::Facet, std::int64_t>`, as in
+`lex_optimal_homologous_chain()`; over Q, the boundary of the output is `cycle` with its
+orientation
+\param np the named parameters of `lex_optimal_homologous_chain()`
+
+\returns a report; its triangulation, representative, order and optimal chain fields are filled.
+\throws Lex_optimal_chains::Input_error with code `BOUNDARY_EDGE_NOT_IN_TRIANGULATION` if an
+edge of `cycle` is not a finite edge of `dt` (the message gives its vertices),
+`BOUNDARY_NOT_A_CYCLE` if the edges do not form a cycle, and the errors of
+`lex_optimal_homologous_chain()`.
+*/
+template <class DT, class EdgeRange, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Open_surface_report
+lex_optimal_chain_with_boundary(const DT& dt, const EdgeRange& cycle, OutputIterator out,
+                                const NamedParameters& np = parameters::default_values())
+{
+  namespace LOC = Lex_optimal_chains;
+  const std::function<bool(double)> callback = parameters::choose_parameter(
+    parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  LOC::Open_surface_report report;
+  LOC::internal::Stopwatch total;
+  LOC::internal::check_dimension(dt);
+  if(LOC::internal::coefficient_field_of(np) == LOC::Coefficient_field::Z2)
+    LOC::internal::optimal_chain_with_boundary<LOC::internal::Z2_arithmetic>(dt, cycle, np, callback, 0.0, out, report);
+  else
+    LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.0, out, report);
+  if(callback) callback(1.0);
+  report.total_seconds = total.lap();
+  return report;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_HOMOLOGOUS_CHAIN_H
