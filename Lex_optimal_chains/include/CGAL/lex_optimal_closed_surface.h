@@ -11,6 +11,7 @@
 #include <CGAL/Lex_optimal_chains/parameters.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_cut_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_mesh_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 
@@ -19,10 +20,6 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -371,37 +368,12 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
 
   Lex_optimal_chains::Closed_surface_report report;
   Lex_optimal_chains::internal::Stopwatch total, watch;
-  std::vector<Point> pts;
-  for(const auto& e : points) {
-    const Point& p = get(point_map, e);
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Input_error(Code::NON_FINITE_COORDINATE,
-                        "point " + std::to_string(pts.size()) + " has a NaN or infinite coordinate");
-    pts.push_back(p);
-  }
+  std::vector<Point> pts = Lex_optimal_chains::internal::finite_points<Point>(points, point_map);
   report.number_of_input_points = pts.size();
-  if(pts.empty()) throw Input_error(Code::EMPTY_INPUT, "no input point");
   if(callback && !callback(0.0)) throw Input_error(Code::CANCELLED, "cancelled by the callback");
-
-#ifdef CGAL_LINKED_WITH_TBB
-  if(threads > 1) {
-    using Vb = Triangulation_vertex_base_3<Kernel>;
-    using Cb = Delaunay_triangulation_cell_base_3<Kernel>;
-    using Tds = Triangulation_data_structure_3<Vb, Cb, Parallel_tag>;
-    using DT = Delaunay_triangulation_3<Kernel, Tds>;
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    Bbox_3 box = bbox_3(pts.begin(), pts.end());
-    typename DT::Lock_data_structure locks(box, 50);
-    DT dt(pts.begin(), pts.end(), &locks);
-    dt.set_lock_data_structure(nullptr);
+  Lex_optimal_chains::internal::with_delaunay_triangulation<Kernel>(pts, threads, [&](auto& dt) {
     Lex_optimal_chains::internal::reconstruct_in(dt, pts, mesh, np, callback, report, watch);
-    report.total_seconds = total.lap();
-    return report;
-  }
-#endif
-  CGAL_USE(threads);
-  Delaunay_triangulation_3<Kernel> dt(pts.begin(), pts.end());
-  Lex_optimal_chains::internal::reconstruct_in(dt, pts, mesh, np, callback, report, watch);
+  });
   report.total_seconds = total.lap();
   return report;
 }

@@ -1,0 +1,98 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_FOOTPRINT_BOUNDARY_H
+#define CGAL_LEX_OPTIMAL_CHAINS_FOOTPRINT_BOUNDARY_H
+
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+A closed polygon just outside the footprint of a terrain-like point cloud (aerial LiDAR,
+photogrammetry tiles), to use as the imposed boundary of
+`lex_optimal_open_surface_reconstruction()`.
+
+Placement: the bounding rectangle of the points in the \f$xy\f$-plane is enlarged by a
+margin of `margin` times its larger side on every side; each side is cut into
+`vertices_per_side` edges whose vertices are pushed outward on a parabola (at most half the
+margin at the middle of a side), so that the polygon is strictly convex. All its vertices are
+at the height of the lowest point. The points then lie strictly inside the vertical prism
+over the polygon, so every polygon vertex is a vertex, and every polygon edge an edge, of
+the convex hull of the points and the polygon, hence of their Delaunay triangulation: the
+boundary is always in the triangulation. The polygon turns counterclockwise seen from
+above, so that over Q the reconstructed surface is oriented upward. Its first vertex is
+repeated at its end.
+
+The triangles that join the polygon to the points (the "skirt") are not part of the terrain:
+drop them with `drop_boundary_triangles(true)`.
+
+\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+\param points the points
+\param np optional `point_map`
+\param margin the margin, relative to the larger side of the footprint
+\param vertices_per_side the number of edges of each side of the polygon
+\throws Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`, or
+`DEGENERATE_POINT_SET` when the footprint is a single point.
+*/
+template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+std::vector<typename boost::property_traits<typename GetPointMap<PointRange, NamedParameters>::const_type>::value_type>
+footprint_boundary(const PointRange& points, const NamedParameters& np = parameters::default_values(),
+                   double margin = 0.05, int vertices_per_side = 16)
+{
+  using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
+  using Point = typename boost::property_traits<Point_map>::value_type;
+  const Point_map point_map = parameters::choose_parameter<Point_map>(parameters::get_parameter(np, CGAL::internal_np::point_map));
+  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, zmin = xmin;
+  double xmax = -xmin, ymax = -xmin;
+  std::size_t n = 0;
+  for(const auto& e : points) {
+    const Point& p = get(point_map, e);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Input_error(Input_error_code::NON_FINITE_COORDINATE, "a point has a NaN or infinite coordinate");
+    xmin = (std::min)(xmin, p.x()); xmax = (std::max)(xmax, p.x());
+    ymin = (std::min)(ymin, p.y()); ymax = (std::max)(ymax, p.y());
+    zmin = (std::min)(zmin, p.z());
+    ++n;
+  }
+  if(n == 0) throw Input_error(Input_error_code::EMPTY_INPUT, "no input point");
+  const double side = (std::max)(xmax - xmin, ymax - ymin);
+  if(!(side > 0))
+    throw Input_error(Input_error_code::DEGENERATE_POINT_SET, "all points have the same x and y: no footprint");
+  if(!(margin > 0) || vertices_per_side < 1)
+    throw Input_error(Input_error_code::DEGENERATE_POINT_SET, "the margin and the number of vertices per side must be positive");
+  const double m = margin * side;
+  // corners of the enlarged rectangle, counterclockwise, and the outward normal of each side
+  const double cx[4] = {xmin - m, xmax + m, xmax + m, xmin - m};
+  const double cy[4] = {ymin - m, ymin - m, ymax + m, ymax + m};
+  const double nx[4] = {0, 1, 0, -1}, ny[4] = {-1, 0, 1, 0};
+  std::vector<Point> polygon;
+  for(int s = 0; s < 4; ++s) {
+    const int e = (s + 1) % 4;
+    for(int k = 0; k < vertices_per_side; ++k) {
+      const double t = double(k) / vertices_per_side;
+      const double bulge = 0.5 * m * 4 * t * (1 - t);
+      polygon.emplace_back(cx[s] + t * (cx[e] - cx[s]) + bulge * nx[s], cy[s] + t * (cy[e] - cy[s]) + bulge * ny[s], zmin);
+    }
+  }
+  polygon.push_back(polygon.front());
+  return polygon;
+}
+
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_FOOTPRINT_BOUNDARY_H

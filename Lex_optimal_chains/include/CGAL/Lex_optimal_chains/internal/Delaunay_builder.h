@@ -1,0 +1,73 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_DELAUNAY_BUILDER_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_DELAUNAY_BUILDER_H
+
+// Builds the 3D Delaunay triangulation of points, in parallel with TBB when asked, and hands
+// it to the rest of a reconstruction (the triangulation type differs with the concurrency
+// tag, hence the callback).
+
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal {
+
+// Copies the points given through `point_map`, refusing NaN and infinite coordinates.
+template <class Point, class PointRange, class PointMap>
+std::vector<Point> finite_points(const PointRange& points, const PointMap& point_map)
+{
+  std::vector<Point> pts;
+  for(const auto& e : points) {
+    const Point& p = get(point_map, e);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Input_error(Input_error_code::NON_FINITE_COORDINATE,
+                        "point " + std::to_string(pts.size()) + " has a NaN or infinite coordinate");
+    pts.push_back(p);
+  }
+  if(pts.empty()) throw Input_error(Input_error_code::EMPTY_INPUT, "no input point");
+  return pts;
+}
+
+// Calls `then(dt)` with the Delaunay triangulation of `points` built with `threads` threads
+// (one without TBB). The triangulation is sequential after its construction.
+template <class Kernel, class Point, class Then>
+void with_delaunay_triangulation(const std::vector<Point>& points, unsigned threads, const Then& then)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads > 1) {
+    using Vb = Triangulation_vertex_base_3<Kernel>;
+    using Cb = Delaunay_triangulation_cell_base_3<Kernel>;
+    using Tds = Triangulation_data_structure_3<Vb, Cb, Parallel_tag>;
+    using DT = Delaunay_triangulation_3<Kernel, Tds>;
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    Bbox_3 box = bbox_3(points.begin(), points.end());
+    typename DT::Lock_data_structure locks(box, 50);
+    DT dt(points.begin(), points.end(), &locks);
+    dt.set_lock_data_structure(nullptr);
+    then(dt);
+    return;
+  }
+#endif
+  (void)threads;
+  Delaunay_triangulation_3<Kernel> dt(points.begin(), points.end());
+  then(dt);
+}
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_DELAUNAY_BUILDER_H
