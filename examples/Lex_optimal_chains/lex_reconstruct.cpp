@@ -2,8 +2,13 @@
 //
 //   lex_reconstruct closed INPUT OUTPUT [--interior X,Y,Z]... [--exterior X,Y,Z]...
 //                   [--threads N] [--json]
+//   lex_reconstruct open INPUT OUTPUT (--boundary FILE | --auto-boundary)
+//                   [--coefficients z2|q] [--remove-blocking-points]
+//                   [--drop-boundary-triangles | --keep-boundary-triangles] [--threads N] [--json]
 //
 // INPUT: points as XYZ, PLY or OFF. OUTPUT: a mesh as OFF, PLY or OBJ, by extension.
+// Boundary FILE: CGAL's polylines text format, one closed polyline per line:
+// "n x1 y1 z1 ... xn yn zn" with the last point equal to the first.
 // On error: a one-line reason on stderr, exit code 1, and no output file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,6 +17,9 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/lex_optimal_closed_surface.h>
+#include <CGAL/lex_optimal_open_surface.h>
+#include <CGAL/Lex_optimal_chains/footprint_boundary.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <CLI/CLI.hpp>
 #include <boost/timer/progress_display.hpp>
@@ -23,6 +31,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -58,113 +68,277 @@ static std::string lower_extension(const std::string& path)
   return e;
 }
 
-int main(int argc, char** argv)
+static std::vector<std::vector<Point>> read_polylines(const std::string& path)
 {
-  CLI::App app{"Surface reconstruction as a lexicographic optimal chain (Lex_optimal_chains)"};
-  app.require_subcommand(1);
-  CLI::App* closed = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
-  std::string input, output;
-  std::vector<std::string> interior_text, exterior_text;
-  unsigned threads = 1;
-  bool json = false;
-  closed->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
-  closed->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
-  closed->add_option("--interior", interior_text, "a point inside the surface, X,Y,Z (repeatable)");
-  closed->add_option("--exterior", exterior_text, "a point outside the surface, X,Y,Z (repeatable)");
-  closed->add_option("--threads", threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
-  closed->add_flag("--json", json, "print one JSON line of statistics on stdout");
-  try {
-    app.parse(argc, argv);
-  } catch(const CLI::ParseError& e) {
-    return app.exit(e);
-  }
-
-  // written under a temporary name with the same extension, renamed on success
-  const std::filesystem::path out_path(output);
-  const std::string tmp =
-    (out_path.parent_path() / ("." + out_path.stem().string() + ".partial" + out_path.extension().string())).string();
-  try {
-    const std::string out_ext = lower_extension(output);
-    if(out_ext != ".off" && out_ext != ".ply" && out_ext != ".obj")
-      throw std::invalid_argument("output '" + output + "' must end in .off, .ply or .obj");
-    const std::string in_ext = lower_extension(input);
-    if(in_ext != ".xyz" && in_ext != ".ply" && in_ext != ".off")
-      throw std::invalid_argument("input '" + input + "' must end in .xyz, .ply or .off");
-    if(!std::filesystem::is_regular_file(input))
-      throw std::invalid_argument("cannot open input '" + input + "'");
-    std::vector<Point> interior, exterior;
-    for(const std::string& t : interior_text) interior.push_back(parse_point(t));
-    for(const std::string& t : exterior_text) exterior.push_back(parse_point(t));
-
-    std::vector<Point> points;
-    {
-      // CGAL's readers print their own diagnostics: keep the one-line reason of this program
-      std::ostringstream reader_messages;
-      std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
-      const bool read = CGAL::IO::read_points(input, std::back_inserter(points));
-      std::cerr.rdbuf(saved);
-      if(!read) throw std::invalid_argument("cannot read points from '" + input + "'");
+  std::ifstream in(path);
+  if(!in) throw std::invalid_argument("cannot open boundary file '" + path + "'");
+  std::vector<std::vector<Point>> polylines;
+  std::string line;
+  for(int number = 1; std::getline(in, line); ++number) {
+    std::istringstream ls(line);
+    long n;
+    if(!(ls >> n)) {
+      if(line.find_first_not_of(" \t\r") == std::string::npos) continue; // blank line
+      throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "' does not start with a number of points");
     }
+    if(n < 0 || n > 100000000) throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "': bad number of points");
+    std::vector<Point> polyline;
+    for(long i = 0; i < n; ++i) {
+      double x, y, z;
+      if(!(ls >> x >> y >> z))
+        throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "' has fewer than " + std::to_string(n) + " points");
+      polyline.emplace_back(x, y, z);
+    }
+    std::string rest;
+    if(ls >> rest) throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "' has more than " + std::to_string(n) + " points");
+    polylines.push_back(std::move(polyline));
+  }
+  return polylines;
+}
 
-    std::unique_ptr<boost::timer::progress_display> bar;
-    if(isatty(STDERR_FILENO)) bar.reset(new boost::timer::progress_display(100, std::cerr));
-    const std::function<bool(double)> progress = [&bar](double x) {
+static std::vector<Point> read_input_points(const std::string& input)
+{
+  const std::string in_ext = lower_extension(input);
+  if(in_ext != ".xyz" && in_ext != ".ply" && in_ext != ".off")
+    throw std::invalid_argument("input '" + input + "' must end in .xyz, .ply or .off");
+  if(!std::filesystem::is_regular_file(input)) throw std::invalid_argument("cannot open input '" + input + "'");
+  std::vector<Point> points;
+  // CGAL's readers print their own diagnostics: keep the one-line reason of this program
+  std::ostringstream reader_messages;
+  std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
+  const bool read = CGAL::IO::read_points(input, std::back_inserter(points));
+  std::cerr.rdbuf(saved);
+  if(!read) throw std::invalid_argument("cannot read points from '" + input + "'");
+  return points;
+}
+
+// components, border loops and genus of the written mesh (sum over the components of
+// (2 - chi - border loops) / 2)
+struct Mesh_topology
+{
+  std::size_t components = 0, border_edges = 0, border_loops = 0;
+  long genus = 0;
+};
+
+static Mesh_topology topology(const Mesh& mesh)
+{
+  Mesh_topology t;
+  {
+    Mesh copy = mesh; // the component map is a property of the mesh
+    auto fcc = copy.add_property_map<Mesh::Face_index, std::size_t>("f:component").first;
+    t.components = CGAL::Polygon_mesh_processing::connected_components(copy, fcc);
+  }
+  std::vector<char> seen(mesh.number_of_halfedges(), 0);
+  for(Mesh::Halfedge_index h : mesh.halfedges()) {
+    if(!mesh.is_border(h)) continue;
+    ++t.border_edges;
+    if(seen[h]) continue;
+    ++t.border_loops;
+    for(Mesh::Halfedge_index g = h; !seen[g]; g = mesh.next(g)) seen[g] = 1;
+  }
+  const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
+  t.genus = (2 * long(t.components) - chi - long(t.border_loops)) / 2;
+  return t;
+}
+
+struct Progress_bar
+{
+  std::unique_ptr<boost::timer::progress_display> bar;
+  Progress_bar() { if(isatty(STDERR_FILENO)) bar.reset(new boost::timer::progress_display(100, std::cerr)); }
+  std::function<bool(double)> callback()
+  {
+    return [this](double x) {
       if(bar) {
         const unsigned long target = (unsigned long)(x * 100);
         while(bar->count() < target) ++(*bar);
       }
       return true;
     };
+  }
+};
 
-    Mesh mesh;
-    const LOC::Closed_surface_report r = CGAL::lex_optimal_closed_surface_reconstruction(
-      points, mesh,
-      LOC::parameters::interior_points(interior,
-      LOC::parameters::exterior_points(exterior,
-      LOC::parameters::number_of_threads(threads,
-      LOC::parameters::callback(progress)))));
+// The mesh is written under a temporary name with the same extension, renamed on success.
+class Output_file
+{
+public:
+  explicit Output_file(const std::string& output) : output_(output)
+  {
+    const std::filesystem::path out_path(output);
+    tmp_ = (out_path.parent_path() / ("." + out_path.stem().string() + ".partial" + out_path.extension().string())).string();
+    const std::string out_ext = lower_extension(output);
+    if(out_ext != ".off" && out_ext != ".ply" && out_ext != ".obj")
+      throw std::invalid_argument("output '" + output + "' must end in .off, .ply or .obj");
+  }
+  ~Output_file() { std::error_code ignored; std::filesystem::remove(tmp_, ignored); }
+  void write(const Mesh& mesh)
+  {
+    if(!CGAL::IO::write_polygon_mesh(tmp_, mesh, CGAL::parameters::stream_precision(17)))
+      throw std::runtime_error("cannot write '" + output_ + "'");
+    std::filesystem::rename(tmp_, output_);
+  }
+private:
+  std::string output_, tmp_;
+};
 
-    CGAL::Real_timer io;
-    io.start();
-    if(!CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17)))
-      throw std::runtime_error("cannot write '" + output + "'");
-    std::filesystem::rename(tmp, output);
-    io.stop();
+static void add_mesh_statistics(nlohmann::json& j, const Mesh& mesh)
+{
+  const Mesh_topology t = topology(mesh);
+  j["vertices"] = mesh.number_of_vertices();
+  j["faces"] = mesh.number_of_faces();
+  j["components"] = t.components;
+  j["boundary_edges"] = t.border_edges;
+  j["boundary_loops"] = t.border_loops;
+  j["closed"] = t.border_edges == 0;
+  j["genus"] = t.genus;
+}
 
-    if(json) {
-      nlohmann::json j;
-      j["input"] = input;
-      j["output"] = output;
-      j["points"] = r.number_of_input_points;
-      j["delaunay_s"] = r.delaunay_seconds;
-      j["order_s"] = r.order_seconds;
-      j["cut_s"] = r.cut_seconds;
-      j["output_s"] = r.output_seconds + io.time();
-      j["total_s"] = r.total_seconds + io.time();
-      j["peak_rss_mb"] = peak_rss_mb();
-      j["vertices"] = r.mesh_vertices;
-      j["faces"] = r.mesh_faces;
-      j["components"] = r.components;
-      j["boundary_edges"] = std::count_if(halfedges(mesh).begin(), halfedges(mesh).end(),
-                                          [&mesh](Mesh::Halfedge_index h) { return is_border(h, mesh); });
-      j["non_manifold_vertices"] = r.non_manifold_vertices;
-      j["non_manifold_edges"] = r.non_manifold_edges;
-      j["closed"] = CGAL::is_closed(mesh);
-      j["genus"] = r.genus;
-      j["automatic_interior"] = r.automatic_interior;
-      j["interior_persistence"] = r.interior_persistence;
-      j["triangles"] = r.number_of_triangles;
-      j["exactly_ordered_triangles"] = r.number_of_exactly_ordered_triangles;
-      std::cout << j.dump() << std::endl;
-    } else {
-      std::cerr << "\nwrote " << output << ": " << r.mesh_vertices << " vertices, " << r.mesh_faces
-                << " faces, " << r.components << " component(s), genus " << r.genus << "\n";
-    }
+static int run_closed(const std::string& input, const std::string& output, const std::vector<std::string>& interior_text,
+                      const std::vector<std::string>& exterior_text, unsigned threads, bool json)
+{
+  Output_file file(output);
+  std::vector<Point> interior, exterior;
+  for(const std::string& t : interior_text) interior.push_back(parse_point(t));
+  for(const std::string& t : exterior_text) exterior.push_back(parse_point(t));
+  const std::vector<Point> points = read_input_points(input);
+  Progress_bar bar;
+  Mesh mesh;
+  const LOC::Closed_surface_report r = CGAL::lex_optimal_closed_surface_reconstruction(
+    points, mesh,
+    LOC::parameters::interior_points(interior,
+    LOC::parameters::exterior_points(exterior,
+    LOC::parameters::number_of_threads(threads,
+    LOC::parameters::callback(bar.callback())))));
+  CGAL::Real_timer io;
+  io.start();
+  file.write(mesh);
+  io.stop();
+  if(json) {
+    nlohmann::json j;
+    j["input"] = input;
+    j["output"] = output;
+    j["points"] = r.number_of_input_points;
+    j["delaunay_s"] = r.delaunay_seconds;
+    j["order_s"] = r.order_seconds;
+    j["cut_s"] = r.cut_seconds;
+    j["output_s"] = r.output_seconds + io.time();
+    j["total_s"] = r.total_seconds + io.time();
+    j["peak_rss_mb"] = peak_rss_mb();
+    add_mesh_statistics(j, mesh);
+    j["genus"] = r.genus; // of the closed components, as split by the documented rule
+    j["non_manifold_vertices"] = r.non_manifold_vertices;
+    j["non_manifold_edges"] = r.non_manifold_edges;
+    j["automatic_interior"] = r.automatic_interior;
+    j["interior_persistence"] = r.interior_persistence;
+    j["triangles"] = r.number_of_triangles;
+    j["exactly_ordered_triangles"] = r.number_of_exactly_ordered_triangles;
+    std::cout << j.dump() << std::endl;
+  } else {
+    std::cerr << "\nwrote " << output << ": " << r.mesh_vertices << " vertices, " << r.mesh_faces << " faces, "
+              << r.components << " component(s), genus " << r.genus << "\n";
+  }
+  return 0;
+}
+
+static int run_open(const std::string& input, const std::string& output, const std::string& boundary_file,
+                    bool auto_boundary, const std::string& coefficients, bool remove_blocking, bool drop, bool keep,
+                    unsigned threads, bool json)
+{
+  Output_file file(output);
+  if(coefficients != "z2" && coefficients != "q")
+    throw std::invalid_argument("--coefficients must be z2 or q, not '" + coefficients + "'");
+  const std::vector<Point> points = read_input_points(input);
+  std::vector<std::vector<Point>> boundary;
+  if(auto_boundary) boundary.push_back(LOC::footprint_boundary(points));
+  else boundary = read_polylines(boundary_file);
+  // the skirt of the automatic boundary is not part of the terrain
+  const bool drop_skirt = drop || (auto_boundary && !keep);
+  Progress_bar bar;
+  Mesh mesh;
+  const LOC::Open_surface_report r = CGAL::lex_optimal_open_surface_reconstruction(
+    points, boundary, mesh,
+    LOC::parameters::coefficient_field(coefficients == "z2" ? LOC::Coefficient_field::Z2 : LOC::Coefficient_field::Q,
+    LOC::parameters::remove_blocking_points(remove_blocking,
+    LOC::parameters::drop_boundary_triangles(drop_skirt,
+    LOC::parameters::number_of_threads(threads,
+    LOC::parameters::callback(bar.callback()))))));
+  CGAL::Real_timer io;
+  io.start();
+  file.write(mesh);
+  io.stop();
+  if(json) {
+    nlohmann::json j;
+    j["input"] = input;
+    j["output"] = output;
+    j["points"] = r.number_of_input_points;
+    j["coefficients"] = coefficients;
+    j["delaunay_s"] = r.delaunay_seconds;
+    j["representative_s"] = r.representative_seconds;
+    j["order_s"] = r.order_seconds;
+    j["optimal_chain_s"] = r.optimal_chain_seconds;
+    j["output_s"] = r.output_seconds + io.time();
+    j["total_s"] = r.total_seconds + io.time();
+    j["peak_rss_mb"] = peak_rss_mb();
+    add_mesh_statistics(j, mesh);
+    j["non_manifold_vertices"] = r.non_manifold_vertices;
+    j["non_manifold_edges"] = r.non_manifold_edges;
+    j["boundary_vertices_added"] = r.number_of_boundary_vertices;
+    j["removed_points"] = r.number_of_removed_points;
+    j["dropped_triangles"] = r.dropped_triangles;
+    j["chain_triangles"] = r.number_of_facets;
+    j["multiple_triangles"] = r.number_of_multiple_facets;
+    j["triangles"] = r.number_of_triangles;
+    std::cout << j.dump() << std::endl;
+  } else {
+    std::cerr << "\nwrote " << output << ": " << r.mesh_vertices << " vertices, " << r.mesh_faces << " faces ("
+              << r.dropped_triangles << " boundary triangles dropped, " << r.number_of_removed_points << " points removed)\n";
+  }
+  return 0;
+}
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"Surface reconstruction as a lexicographic optimal chain (Lex_optimal_chains)"};
+  app.require_subcommand(1);
+  std::string input, output, boundary_file, coefficients = "q";
+  std::vector<std::string> interior_text, exterior_text;
+  unsigned threads = 1;
+  bool json = false, auto_boundary = false, remove_blocking = false, drop = false, keep = false;
+
+  CLI::App* closed = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
+  closed->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
+  closed->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
+  closed->add_option("--interior", interior_text, "a point inside the surface, X,Y,Z (repeatable)");
+  closed->add_option("--exterior", exterior_text, "a point outside the surface, X,Y,Z (repeatable)");
+  closed->add_option("--threads", threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
+  closed->add_flag("--json", json, "print one JSON line of statistics on stdout");
+
+  CLI::App* open = app.add_subcommand("open", "open surface bounded by closed polylines");
+  open->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
+  open->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
+  auto* b = open->add_option("--boundary", boundary_file, "closed polylines, CGAL's polylines text format");
+  auto* a = open->add_flag("--auto-boundary", auto_boundary,
+                           "a polygon just outside the xy-footprint, at the lowest height (terrain tiles); implies --drop-boundary-triangles");
+  b->excludes(a);
+  open->add_option("--coefficients", coefficients, "z2 (unoriented) or q (oriented, default)");
+  open->add_flag("--remove-blocking-points", remove_blocking,
+                 "remove the input points that keep a boundary edge out of the Delaunay triangulation");
+  auto* d = open->add_flag("--drop-boundary-triangles", drop, "drop the triangles touching boundary vertices that are not input points");
+  auto* k = open->add_flag("--keep-boundary-triangles", keep, "keep them with --auto-boundary");
+  d->excludes(k);
+  open->add_option("--threads", threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
+  open->add_flag("--json", json, "print one JSON line of statistics on stdout");
+  try {
+    app.parse(argc, argv);
+    if(open->parsed() && boundary_file.empty() && !auto_boundary)
+      throw CLI::RequiredError("--boundary or --auto-boundary");
+  } catch(const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if(closed->parsed()) return run_closed(input, output, interior_text, exterior_text, threads, json);
+    return run_open(input, output, boundary_file, auto_boundary, coefficients, remove_blocking, drop, keep, threads, json);
   } catch(const std::exception& e) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
     std::cerr << "lex_reconstruct: error: " << e.what() << std::endl;
     return 1;
   }
-  return 0;
 }

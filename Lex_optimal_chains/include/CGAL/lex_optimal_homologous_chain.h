@@ -59,6 +59,7 @@ struct Open_surface_report
   std::size_t mesh_faces = 0;                    ///< faces of the output mesh (reconstruction only)
   std::size_t dropped_triangles = 0;             ///< triangles dropped because they touch a boundary-only vertex
   std::size_t non_manifold_vertices = 0;         ///< vertices duplicated to make the mesh manifold (reconstruction only)
+  std::size_t non_manifold_edges = 0;            ///< edges of more than two triangles of the chain (reconstruction only)
 };
 
 namespace internal {

@@ -229,7 +229,7 @@ insert_boundary(Triangulation& dt, const std::vector<std::vector<Point>>& polyli
 template <class Triangulation, class Point>
 void chain_soup(const std::vector<std::pair<typename Triangulation::Facet, std::int64_t>>& chain, bool oriented,
                 const std::set<typename Triangulation::Vertex_handle>& drop, std::vector<Point>& points,
-                std::vector<std::array<std::size_t, 3>>& triangles, std::size_t& dropped)
+                std::vector<std::array<std::size_t, 3>>& triangles, std::size_t& dropped, std::size_t& non_manifold_edges)
 {
   using Vertex_handle = typename Triangulation::Vertex_handle;
   std::vector<std::array<Vertex_handle, 3>> kept;
@@ -249,6 +249,11 @@ void chain_soup(const std::vector<std::pair<typename Triangulation::Facet, std::
   auto index = [&](Vertex_handle v) {
     return std::size_t(std::lower_bound(used.begin(), used.end(), v->point()) - used.begin());
   };
+  // edges of more than two triangles (orient_polygon_soup() separates them)
+  std::map<std::pair<Vertex_handle, Vertex_handle>, int> edge_degree;
+  for(const auto& t : kept)
+    for(int k = 0; k < 3; ++k) ++edge_degree[std::minmax(t[k], t[(k + 1) % 3])];
+  non_manifold_edges = std::count_if(edge_degree.begin(), edge_degree.end(), [](const auto& e) { return e.second > 2; });
   triangles.clear();
   for(const auto& t : kept) {
     std::array<std::size_t, 3> f{{index(t[0]), index(t[1]), index(t[2])}};
@@ -375,7 +380,7 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     watch.lap();
     const std::set<typename Triangulation::Vertex_handle> none;
     LOC::internal::chain_soup<Triangulation>(chain, field == LOC::Coefficient_field::Q, drop ? boundary_only : none,
-                                             soup_points, soup, report.dropped_triangles);
+                                             soup_points, soup, report.dropped_triangles, report.non_manifold_edges);
     dt.clear(); // before the mesh is built: peak memory
   });
   const std::size_t soup_vertices = soup_points.size();
