@@ -1,0 +1,135 @@
+// Benchmark of open surface reconstruction in the shape of Table 4.2 of the thesis, on a
+// noisy terrain (a smooth height field with steps like buildings, noise of 5 cm) meshed
+// with the automatic footprint boundary.
+//
+//   benchmark_open_surface [N ...]           each measurement in a fresh process (peak
+//                                            memory is per process), then a table with ratios
+//   benchmark_open_surface --one MODE N      one measurement (delaunay | lex), JSON
+//   benchmark_open_surface --profile N       one verbose reconstruction
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/lex_optimal_open_surface.h>
+#include <CGAL/Lex_optimal_chains/footprint_boundary.h>
+
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace LOC = CGAL::Lex_optimal_chains;
+
+static double peak_rss_mb()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;
+}
+
+// n points on a 1 km x 1 km terrain: hills, a grid of flat-roofed blocks 12 m high, noise 5 cm
+static std::vector<Point> noisy_terrain(std::size_t n)
+{
+  CGAL::Random rng(42);
+  std::vector<Point> pts;
+  pts.reserve(n);
+  while(pts.size() < n) {
+    const double x = rng.get_double(0, 1000), y = rng.get_double(0, 1000);
+    double z = 20 * std::sin(x / 160) * std::cos(y / 210) + 0.01 * x;
+    const double bx = std::fmod(x, 100), by = std::fmod(y, 100);
+    if(bx > 30 && bx < 70 && by > 25 && by < 75) z += 12;
+    pts.emplace_back(x, y, z + rng.get_double(-0.05, 0.05));
+  }
+  return pts;
+}
+
+static int one(const std::string& mode, std::size_t n, bool verbose)
+{
+  const std::vector<Point> pts = noisy_terrain(n);
+  const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(pts)};
+  const double base_mb = peak_rss_mb();
+  CGAL::Real_timer t;
+  std::ostringstream json;
+  json << std::setprecision(6) << "{\"mode\":\"" << mode << "\",\"n\":" << n;
+  if(mode == "delaunay") {
+    std::vector<Point> all = pts;
+    all.insert(all.end(), boundary[0].begin(), boundary[0].end() - 1);
+    t.start();
+    CGAL::Delaunay_triangulation_3<K> dt(all.begin(), all.end());
+    t.stop();
+    json << ",\"delaunay_s\":" << t.time() << ",\"cells\":" << dt.number_of_cells();
+  } else if(mode == "lex") {
+    Mesh mesh;
+    t.start();
+    const auto r = CGAL::lex_optimal_open_surface_reconstruction(
+      pts, boundary, mesh, LOC::parameters::drop_boundary_triangles(true, CGAL::parameters::verbose(verbose)));
+    t.stop();
+    json << ",\"delaunay_s\":" << r.delaunay_seconds << ",\"representative_s\":" << r.representative_seconds
+         << ",\"order_s\":" << r.order_seconds << ",\"algorithm10_s\":" << r.optimal_chain_seconds
+         << ",\"output_s\":" << r.output_seconds << ",\"total_s\":" << t.time() << ",\"vertices\":" << r.mesh_vertices
+         << ",\"faces\":" << r.mesh_faces << ",\"representative_triangles\":" << r.number_of_representative_triangles
+         << ",\"non_manifold_vertices\":" << r.non_manifold_vertices;
+  } else {
+    std::cerr << "unknown mode " << mode << "\n";
+    return 2;
+  }
+  json << ",\"points_mb\":" << base_mb << ",\"peak_rss_mb\":" << peak_rss_mb() << "}";
+  std::cout << json.str() << std::endl;
+  return 0;
+}
+
+static std::map<std::string, double> run_child(const std::string& self, const std::string& mode, std::size_t n)
+{
+  const std::string cmd = self + " --one " + mode + " " + std::to_string(n);
+  std::map<std::string, double> values;
+  FILE* p = popen(cmd.c_str(), "r");
+  if(!p) return values;
+  std::string out;
+  char buf[4096];
+  while(fgets(buf, sizeof buf, p)) out += buf;
+  pclose(p);
+  std::size_t pos = 0; // flat JSON of numbers: "key":value pairs
+  while((pos = out.find('"', pos)) != std::string::npos) {
+    const std::size_t end = out.find('"', pos + 1);
+    const std::string key = out.substr(pos + 1, end - pos - 1);
+    pos = end + 1;
+    if(pos < out.size() && out[pos] == ':' && out[pos + 1] != '"') values[key] = std::atof(out.c_str() + pos + 1);
+  }
+  std::cerr << out;
+  return values;
+}
+
+int main(int argc, char** argv)
+{
+  if(argc == 4 && std::string(argv[1]) == "--one") return one(argv[2], std::stoul(argv[3]), false);
+  if(argc == 3 && std::string(argv[1]) == "--profile") return one("lex", std::stoul(argv[2]), true);
+  std::vector<std::size_t> sizes;
+  for(int i = 1; i < argc; ++i) sizes.push_back(std::stoul(argv[i]));
+  if(sizes.empty()) sizes = {1000000, 5000000};
+  std::cout << std::fixed << std::setprecision(3)
+            << "points     delaunay_s  representative_s  order_s  alg10_s  optimal_chain_s  output_s  total_s"
+               "  repr/DT  chain/DT  total/DT  peak_GB  peak/DT\n";
+  for(std::size_t n : sizes) {
+    auto d = run_child(argv[0], "delaunay", n);
+    auto l = run_child(argv[0], "lex", n);
+    const double dt = d["delaunay_s"], chain = l["order_s"] + l["algorithm10_s"];
+    std::cout << std::setw(9) << n << "  " << std::setw(10) << dt << "  " << std::setw(16) << l["representative_s"]
+              << "  " << std::setw(7) << l["order_s"] << "  " << std::setw(7) << l["algorithm10_s"] << "  "
+              << std::setw(15) << chain << "  " << std::setw(8) << l["output_s"] << "  " << std::setw(7) << l["total_s"]
+              << "  " << std::setw(7) << l["representative_s"] / dt << "  " << std::setw(8) << chain / dt << "  "
+              << std::setw(8) << l["total_s"] / dt << "  " << std::setw(7) << l["peak_rss_mb"] / 1024 << "  "
+              << std::setw(7) << l["peak_rss_mb"] / d["peak_rss_mb"] << std::endl;
+  }
+  return 0;
+}
