@@ -281,6 +281,7 @@ static int run_open(const std::string& input, const std::string& output, const s
     add_mesh_statistics(j, mesh);
     j["non_manifold_vertices"] = r.non_manifold_vertices;
     j["non_manifold_edges"] = r.non_manifold_edges;
+    j["orientation_cuts"] = r.orientation_cuts;
     j["boundary_vertices_added"] = r.number_of_boundary_vertices;
     j["removed_points"] = r.number_of_removed_points;
     j["dropped_triangles"] = r.dropped_triangles;

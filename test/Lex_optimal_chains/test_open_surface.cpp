@@ -96,7 +96,7 @@ void test_height_field(CGAL::Random& rng)
     assert(components(mesh) == 1);
     assert(border_edges(mesh) == polygon_edges); // the boundary is the given polygon
     assert(euler_characteristic(mesh) == 1);     // a disk
-    assert(report.non_manifold_vertices == 0);
+    assert(report.non_manifold_vertices == 0 && report.orientation_cuts == 0);
     assert(report.number_of_boundary_vertices == polygon.size() - 1);
     assert(mesh.number_of_vertices() <= points.size() + polygon.size() - 1);
     if(field == LOC::Coefficient_field::Q) {
@@ -168,14 +168,15 @@ void test_moebius(CGAL::Random& rng)
     points, boundary, z2, LOC::parameters::remove_blocking_points(true, LOC::parameters::coefficient_field(LOC::Coefficient_field::Z2)));
   const auto rq = CGAL::lex_optimal_open_surface_reconstruction(
     points, boundary, q, LOC::parameters::remove_blocking_points(true, LOC::parameters::coefficient_field(LOC::Coefficient_field::Q)));
-  std::cout << "Moebius: Z2 " << rz.number_of_facets << " triangles (" << rz.non_manifold_vertices
-            << " vertices duplicated to orient it), Q " << rq.number_of_facets << " triangles ("
-            << rq.number_of_multiple_facets << " with coefficient 2, " << rq.non_manifold_vertices << " duplicated); "
+  std::cout << "Moebius: Z2 " << rz.number_of_facets << " triangles (" << rz.orientation_cuts
+            << " edges cut to orient it), Q " << rq.number_of_facets << " triangles ("
+            << rq.number_of_multiple_facets << " with coefficient 2, " << rq.orientation_cuts << " edges cut); "
             << rz.number_of_removed_points << " points removed\n";
   // the Z2 optimum is the strip: not orientable, so orienting it cuts it
-  assert(rz.non_manifold_vertices > 0);
+  assert(rz.orientation_cuts > 0);
   // the Q optimum is another chain, oriented
   assert(rq.number_of_facets != rz.number_of_facets || rq.number_of_multiple_facets > 0);
+  assert(rq.orientation_cuts == 0);
   assert(CGAL::is_valid_polygon_mesh(q) && CGAL::is_valid_polygon_mesh(z2));
 }
 

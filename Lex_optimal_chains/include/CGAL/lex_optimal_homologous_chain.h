@@ -58,8 +58,9 @@ struct Open_surface_report
   std::size_t mesh_vertices = 0;                 ///< vertices of the output mesh (reconstruction only)
   std::size_t mesh_faces = 0;                    ///< faces of the output mesh (reconstruction only)
   std::size_t dropped_triangles = 0;             ///< triangles dropped because they touch a boundary-only vertex
-  std::size_t non_manifold_vertices = 0;         ///< vertices duplicated to make the mesh manifold (reconstruction only)
-  std::size_t non_manifold_edges = 0;            ///< edges of more than two triangles of the chain (reconstruction only)
+  std::size_t non_manifold_vertices = 0;         ///< vertex copies added to separate umbrellas (reconstruction only)
+  std::size_t non_manifold_edges = 0;            ///< edges of more than two triangles of the chain, split in the mesh (reconstruction only)
+  std::size_t orientation_cuts = 0;              ///< edges cut to orient the mesh: over Z2, where the chain is not orientable (reconstruction only)
 };
 
 namespace internal {

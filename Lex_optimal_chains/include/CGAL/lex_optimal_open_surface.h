@@ -11,6 +11,7 @@
 #include <CGAL/Lex_optimal_chains/Coefficient_field.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
@@ -21,8 +22,6 @@
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -228,13 +227,12 @@ insert_boundary(Triangulation& dt, const std::vector<std::vector<Point>>& polyli
 }
 
 // The soup of the chain, its vertices sorted by coordinates and its triangles sorted, so that
-// the output does not depend on the input order or on memory addresses. Counts the edges of
-// more than two triangles (orient_polygon_soup() separates them).
+// the output does not depend on the input order or on memory addresses.
 template <class Triangulation, class Point>
 void chain_soup(const typename Triangulation::Triangulation_data_structure& tds,
                 const std::vector<std::pair<typename Triangulation::Facet, std::int64_t>>& chain, bool oriented,
                 const std::set<typename Triangulation::Vertex_handle>& drop, std::vector<Point>& points,
-                std::vector<std::array<std::size_t, 3>>& triangles, std::size_t& dropped, std::size_t& non_manifold_edges)
+                std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
 {
   using Vertex = typename Triangulation::Vertex;
   const std::vector<const Vertex*> dropped_vertices = [&] {
@@ -272,30 +270,16 @@ void chain_soup(const typename Triangulation::Triangulation_data_structure& tds,
     number[dense.index(used[k])] = k;
     points.push_back(used[k]->point());
   }
-  auto index = [&](const Vertex* v) { return std::size_t(number[dense.index(v)]); };
+  auto index = [&](const Vertex* v) { return number[dense.index(v)]; };
   triangles.clear();
   triangles.reserve(kept.size());
-  std::vector<std::uint64_t> edges;
-  edges.reserve(3 * kept.size());
   for(const auto& t : kept) {
-    std::array<std::size_t, 3> f{{index(t[0]), index(t[1]), index(t[2])}};
-    for(int k = 0; k < 3; ++k) {
-      const auto e = std::minmax(f[k], f[(k + 1) % 3]);
-      edges.push_back((std::uint64_t(e.first) << 32) | e.second);
-    }
+    std::array<std::uint32_t, 3> f{{index(t[0]), index(t[1]), index(t[2])}};
     if(oriented) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end()); // keeps the orientation
     else std::sort(f.begin(), f.end());
     triangles.push_back(f);
   }
   std::sort(triangles.begin(), triangles.end());
-  std::sort(edges.begin(), edges.end());
-  non_manifold_edges = 0;
-  for(std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i;
-    while(j < edges.size() && edges[j] == edges[i]) ++j;
-    if(j - i > 2) ++non_manifold_edges;
-    i = j;
-  }
 }
 
 } // namespace internal
@@ -316,12 +300,12 @@ points that lie in the closed diametral ball of a missing edge keep it out of th
 triangulation, and can be removed with `remove_blocking_points(true)` (once these balls are
 empty the edges are Gabriel edges, hence Delaunay edges).
 
-The mesh is the chain as a polygon soup made a mesh by CGAL's
-`Polygon_mesh_processing::orient_polygon_soup()` (which duplicates the vertices where the
-chain is not a manifold: their number is reported) and `polygon_soup_to_polygon_mesh()`.
-Over Q the faces keep the orientation of the chain, whose boundary is the polylines with
-their orientation; over Z2 each connected manifold part is oriented, and a non-orientable
-optimum (a Möbius strip) is cut. A triangle whose coefficient is not 1 or -1 (possible only
+The mesh is the chain made a valid polygon mesh: an edge of three triangles or more is
+split, one copy per triangle, and a vertex gets one copy per umbrella (per fan of its
+triangles joined by edges); these are counted in the report. Over Q the faces keep the
+orientation of the chain, whose boundary is the polylines with their orientation; over Z2
+the triangles are oriented by a traversal across edges, and a non-orientable optimum (a
+Möbius strip) is cut along the edges where the orientation disagrees (`orientation_cuts`). A triangle whose coefficient is not 1 or -1 (possible only
 over Q, when the boundary winds more than once) appears once; such triangles are counted.
 
 \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
@@ -393,7 +377,7 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
   if(callback && !callback(0.0)) throw LOC::Input_error(LOC::Input_error_code::CANCELLED, "cancelled by the callback");
 
   std::vector<Point> soup_points;
-  std::vector<std::array<std::size_t, 3>> soup;
+  std::vector<std::array<std::uint32_t, 3>> soup;
   LOC::internal::with_delaunay_triangulation<Kernel>(pts, threads, [&](auto& dt) {
     using Triangulation = std::remove_reference_t<decltype(dt)>;
     std::vector<Point>().swap(pts);
@@ -413,24 +397,24 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     watch.lap();
     const std::set<typename Triangulation::Vertex_handle> none;
     LOC::internal::chain_soup<Triangulation>(dt.tds(), chain, field == LOC::Coefficient_field::Q, drop ? boundary_only : none,
-                                             soup_points, soup, report.dropped_triangles, report.non_manifold_edges);
+                                             soup_points, soup, report.dropped_triangles);
     report.output_seconds = watch.lap();
     dt.clear(); // before the mesh is built: peak memory
     report.output_seconds += watch.lap();
   });
-  const std::size_t soup_vertices = soup_points.size();
-  Polygon_mesh_processing::orient_polygon_soup(soup_points, soup);
-  report.non_manifold_vertices = soup_points.size() - soup_vertices;
-  const double orient_seconds = watch.lap();
   const std::size_t vertices_before = num_vertices(mesh), faces_before = num_faces(mesh);
-  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup_points, soup, mesh);
+  const LOC::internal::Chain_soup_statistics stats =
+    LOC::internal::add_chain_soup(soup_points, soup, field == LOC::Coefficient_field::Q, mesh);
+  report.non_manifold_vertices = stats.vertex_copies;
+  report.non_manifold_edges = stats.non_manifold_edges;
+  report.orientation_cuts = stats.orientation_cuts;
   report.mesh_vertices = num_vertices(mesh) - vertices_before;
   report.mesh_faces = num_faces(mesh) - faces_before;
   const double build_seconds = watch.lap();
   if(verbose)
-    std::cerr << "Lex_optimal_chains: soup and triangulation freed in " << report.output_seconds << " s, soup oriented in "
-              << orient_seconds << " s, mesh built in " << build_seconds << " s\n";
-  report.output_seconds += orient_seconds + build_seconds;
+    std::cerr << "Lex_optimal_chains: soup and triangulation freed in " << report.output_seconds
+              << " s, mesh built in " << build_seconds << " s\n";
+  report.output_seconds += build_seconds;
   if(callback) callback(1.0);
   report.total_seconds = total.lap();
   return report;

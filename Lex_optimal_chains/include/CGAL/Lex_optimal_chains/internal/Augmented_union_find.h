@@ -8,11 +8,15 @@
 // group. `value[x]` is the value of the directed path from x to its parent, so the sum of
 // the values from x to its root is the value of the path from x to the root (a root has
 // value zero). Path halving adds up the values it shortcuts; union by rank negates the link
-// value when the link goes the other way.
+// value when the link goes the other way. Defined for Z2_arithmetic and Integer_arithmetic.
+
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
 
 #include <CGAL/assertions.h>
 
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -21,54 +25,90 @@ namespace CGAL {
 namespace Lex_optimal_chains {
 namespace internal {
 
+// How the nodes are stored: the parent and the value of its link side by side, so that a
+// step of `find` reads one word (Z2: the value is the top bit of the parent index) or one
+// 8-byte node (integers: a 32-bit value, range-checked).
+template <class Arithmetic>
+struct Augmented_node;
+
+template <>
+struct Augmented_node<Z2_arithmetic>
+{
+  std::uint32_t word; // parent | value << 31
+  static constexpr std::uint32_t max_size = std::uint32_t(1) << 31;
+  std::uint32_t parent() const { return word & 0x7fffffffu; }
+  std::uint8_t value() const { return std::uint8_t(word >> 31); }
+  void set(std::uint32_t parent, std::uint8_t value) { word = parent | (std::uint32_t(value) << 31); }
+};
+
+template <>
+struct Augmented_node<Integer_arithmetic>
+{
+  std::uint32_t parent_index;
+  std::int32_t link_value;
+  static constexpr std::uint32_t max_size = std::numeric_limits<std::uint32_t>::max();
+  std::uint32_t parent() const { return parent_index; }
+  std::int64_t value() const { return link_value; }
+  void set(std::uint32_t parent, std::int64_t value)
+  {
+    if(value > std::numeric_limits<std::int32_t>::max() || value < std::numeric_limits<std::int32_t>::min())
+      throw Input_error(Input_error_code::TOO_LARGE, "an intersection product overflows 32-bit integers");
+    parent_index = parent;
+    link_value = std::int32_t(value);
+  }
+};
+
 template <class Arithmetic>
 class Augmented_union_find
 {
 public:
   using Index = std::uint32_t;
   using Value = typename Arithmetic::Value;
+  using Node = Augmented_node<Arithmetic>;
 
   explicit Augmented_union_find(std::size_t n = 0) { reset(n); }
 
   // MakeSet* for the elements [0, n)
   void reset(std::size_t n)
   {
-    parent_.resize(n);
-    std::iota(parent_.begin(), parent_.end(), Index(0));
+    if(n > Node::max_size)
+      throw Input_error(Input_error_code::TOO_LARGE, "too many elements for the augmented disjoint sets");
+    nodes_.resize(n);
+    for(std::size_t i = 0; i < n; ++i) nodes_[i].set(Index(i), Arithmetic::zero());
     rank_.assign(n, 0);
-    value_.assign(n, Arithmetic::zero());
   }
 
-  std::size_t size() const { return parent_.size(); }
+  std::size_t size() const { return nodes_.size(); }
 
   // FindSet*: the root of x and the value of the path from x to it.
   std::pair<Index, Value> find(Index x)
   {
-    CGAL_precondition(x < parent_.size());
+    CGAL_precondition(x < nodes_.size());
     Value g = Arithmetic::zero();
-    while(parent_[x] != x) {
-      const Index p = parent_[x];
+    for(;;) {
+      Node& n = nodes_[x];
+      const Index p = n.parent();
+      if(p == x) return {x, g};
+      const Node& np = nodes_[p];
       // x now skips p: its link value becomes the value of the path x -> p -> parent(p)
-      value_[x] = Arithmetic::add(value_[x], value_[p]);
-      parent_[x] = parent_[p];
-      g = Arithmetic::add(g, value_[x]);
-      x = parent_[x];
+      const Value v = Arithmetic::add(n.value(), np.value());
+      const Index gp = np.parent();
+      n.set(gp, v);
+      g = Arithmetic::add(g, v);
+      x = gp;
     }
-    return {x, g};
   }
 
   // LinkSet*: joins the roots r1 and r2 (distinct) so that the path from r1 to r2 has value
   // `delta`; returns the new root.
   Index link_roots(Index r1, Index r2, Value delta)
   {
-    CGAL_precondition(r1 != r2 && parent_[r1] == r1 && parent_[r2] == r2);
+    CGAL_precondition(r1 != r2 && nodes_[r1].parent() == r1 && nodes_[r2].parent() == r2);
     if(rank_[r1] > rank_[r2]) { // r2 goes under r1: the path r2 -> r1 has value -delta
-      parent_[r2] = r1;
-      value_[r2] = Arithmetic::negate(delta);
+      nodes_[r2].set(r1, Arithmetic::negate(delta));
       return r1;
     }
-    parent_[r1] = r2;
-    value_[r1] = delta;
+    nodes_[r1].set(r2, delta);
     if(rank_[r1] == rank_[r2]) ++rank_[r2];
     return r2;
   }
@@ -76,17 +116,15 @@ public:
   void prefetch(Index x) const
   {
 #if defined(__GNUC__)
-    __builtin_prefetch(parent_.data() + x);
-    __builtin_prefetch(value_.data() + x);
+    __builtin_prefetch(nodes_.data() + x);
 #else
     (void)x;
 #endif
   }
 
 private:
-  std::vector<Index> parent_;
+  std::vector<Node> nodes_;
   std::vector<std::uint8_t> rank_;
-  std::vector<Value> value_;
 };
 
 } // namespace internal
