@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Quick start of the two packages on a fresh Debian 12 machine.
 #   bash scripts/quickstart.sh run    install what is missing, build in Release, reconstruct
-#                                     kitten.xyz (a real scan from libcgal-demo)
+#                                     kitten.xyz (closed) and b9_training.ply (open: aerial
+#                                     LiDAR), real scans from libcgal-demo
 #   bash scripts/quickstart.sh test   same set-up, then build and run all tests with ctest
 set -euo pipefail
 mode="${1:-run}"
@@ -29,7 +30,10 @@ if [ "$mode" = run ]; then
   mkdir -p results
   ./build/examples/Lex_optimal_chains/lex_reconstruct closed \
     build/cgal-data/data/points_3/kitten.xyz results/kitten_closed.off --json
-  echo "The reconstructed surface is in $(pwd)/results/kitten_closed.off"
+  ./build/examples/Lex_optimal_chains/lex_reconstruct open \
+    build/cgal-data/data/points_3/b9_training.ply results/b9_training_open.off --auto-boundary --json
+  echo "The reconstructed surfaces are in $(pwd)/results/: kitten_closed.off (closed surface)" \
+       "and b9_training_open.off (terrain bounded by its footprint)"
 else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON
   cmake --build build -j"$jobs"
