@@ -1,0 +1,65 @@
+// A curve through noisy 2D samples as a lexicographic optimal path (thesis Fig. 4.11): in the
+// Delaunay triangulation of the samples, the minimal 1-chain bounded by two end samples, for
+// the order of the edges by length (a user-given strict total order, ties broken by the
+// vertices). Lexicographic minimality avoids long edges above all: the path follows the
+// samples, without the shortcuts a shortest path would take.
+//
+//   lex_optimal_curve_2 [N]     N noisy samples of a spiral arc (default 400)
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Random.h>
+#include <CGAL/Lex_optimal_chains/minimal_chains.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_2;
+namespace LOC = CGAL::Lex_optimal_chains;
+using Simplex = LOC::Simplicial_complex::Simplex;
+
+int main(int argc, char** argv)
+{
+  const int n = argc > 1 ? std::atoi(argv[1]) : 400;
+  if(n < 2) { std::cerr << "lex_optimal_curve_2: error: at least 2 samples\n"; return 1; }
+  CGAL::Random rng(4);
+  std::vector<Point> points;
+  for(int i = 0; i < n; ++i) { // a spiral arc, noise of about a third of the sampling step
+    const double t = 1 + 3 * CGAL_PI * i / (n - 1), r = 0.1 * t;
+    points.emplace_back(r * std::cos(t) + rng.get_double(-0.004, 0.004), r * std::sin(t) + rng.get_double(-0.004, 0.004));
+  }
+  // the Delaunay 2-complex of the samples
+  CGAL::Delaunay_triangulation_2<K> dt;
+  std::map<Point, std::uint32_t> index_of;
+  for(std::uint32_t i = 0; i < points.size(); ++i) index_of[points[i]] = i;
+  dt.insert(points.begin(), points.end());
+  LOC::Simplicial_complex complex(std::uint32_t(points.size()));
+  for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+    complex.add_simplex({index_of[f->vertex(0)->point()], index_of[f->vertex(1)->point()], index_of[f->vertex(2)->point()]});
+  if(complex.number_of_simplices(1) == 0) // collinear samples: the edges only
+    for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+      complex.add_simplex({index_of[e->first->vertex(dt.cw(e->second))->point()], index_of[e->first->vertex(dt.ccw(e->second))->point()]});
+
+  // edges by squared length, then by their vertices (a strict total order)
+  auto less = [&](const Simplex& a, const Simplex& b) {
+    const double la = CGAL::squared_distance(points[a[0]], points[a[1]]);
+    const double lb = CGAL::squared_distance(points[b[0]], points[b[1]]);
+    return la != lb ? la < lb : a < b;
+  };
+  const std::vector<std::uint32_t> order = LOC::sort_simplices(complex, 1, less);
+  // the boundary: the two ends (vertices are 0-simplices; Z2)
+  LOC::Chain<LOC::Z2_field> ends{{std::uint32_t(complex.index({0})), 1}, {std::uint32_t(complex.index({std::uint32_t(n - 1)})), 1}};
+  const auto path = LOC::minimal_chain_with_boundary<LOC::Z2_field>(complex, 1, order, ends);
+  std::size_t along = 0;
+  for(const auto& e : *path) {
+    const Simplex& s = complex.simplex(1, e.first);
+    along += (s[1] == s[0] + 1); // an edge between consecutive samples of the curve
+  }
+  std::cout << "path of " << path->size() << " edges between the two ends, " << along
+            << " of them between consecutive samples of the curve\n";
+  for(const auto& e : *path) std::cout << complex.simplex(1, e.first)[0] << " " << complex.simplex(1, e.first)[1] << "\n";
+  return 0;
+}
