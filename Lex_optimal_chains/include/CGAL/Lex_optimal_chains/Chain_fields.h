@@ -20,13 +20,21 @@ All coefficient fields have the same static interface: `Value`, `zero()`, `one()
 struct Z2_field
 {
   typedef std::uint8_t Value; ///< 0 or 1
+  /// the neutral element of the addition
   static Value zero() { return 0; }
+  /// the neutral element of the multiplication
   static Value one() { return 1; }
+  /// the sum
   static Value add(Value a, Value b) { return Value(a ^ b); }
+  /// the difference
   static Value subtract(Value a, Value b) { return Value(a ^ b); }
+  /// the product
   static Value multiply(Value a, Value b) { return Value(a & b); }
+  /// the quotient by a non-zero element
   static Value divide(Value a, Value) { return a; }
+  /// true for zero
   static bool is_zero(Value a) { return a == 0; }
+  /// the image of an integer
   static Value from_integer(long k) { return Value(k & 1); }
 };
 
@@ -42,13 +50,21 @@ template <std::uint32_t P = 2147483647u>
 struct Zp_field
 {
   typedef std::uint32_t Value; ///< in [0, P)
+  /// the neutral element of the addition
   static Value zero() { return 0; }
+  /// the neutral element of the multiplication
   static Value one() { return 1; }
+  /// the sum
   static Value add(Value a, Value b) { return Value((std::uint64_t(a) + b) % P); }
+  /// the difference
   static Value subtract(Value a, Value b) { return Value((std::uint64_t(a) + P - b) % P); }
+  /// the product
   static Value multiply(Value a, Value b) { return Value(std::uint64_t(a) * b % P); }
+  /// the quotient by a non-zero element
   static Value divide(Value a, Value b) { return multiply(a, inverse(b)); }
+  /// true for zero
   static bool is_zero(Value a) { return a == 0; }
+  /// the image of an integer
   static Value from_integer(long k) { return Value(((k % long(P)) + long(P)) % long(P)); }
   /// the inverse of a non-zero element (Fermat)
   static Value inverse(Value b)
@@ -67,13 +83,21 @@ The rationals, exactly (`CGAL::Exact_rational`): oriented chains.
 struct Q_field
 {
   typedef Exact_rational Value; ///< a rational number
+  /// the neutral element of the addition
   static Value zero() { return Value(0); }
+  /// the neutral element of the multiplication
   static Value one() { return Value(1); }
+  /// the sum
   static Value add(const Value& a, const Value& b) { return a + b; }
+  /// the difference
   static Value subtract(const Value& a, const Value& b) { return a - b; }
+  /// the product
   static Value multiply(const Value& a, const Value& b) { return a * b; }
+  /// the quotient by a non-zero element
   static Value divide(const Value& a, const Value& b) { return a / b; }
+  /// true for zero
   static bool is_zero(const Value& a) { return a == 0; }
+  /// the image of an integer
   static Value from_integer(long k) { return Value(k); }
 };
 
