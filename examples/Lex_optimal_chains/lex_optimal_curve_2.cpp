@@ -9,7 +9,9 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Random.h>
 #include <CGAL/Lex_optimal_chains/minimal_chains.h>
+#include <CGAL/Lex_optimal_chains/triangulation_complex.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -31,35 +33,37 @@ int main(int argc, char** argv)
     const double t = 1 + 3 * CGAL_PI * i / (n - 1), r = 0.1 * t;
     points.emplace_back(r * std::cos(t) + rng.get_double(-0.004, 0.004), r * std::sin(t) + rng.get_double(-0.004, 0.004));
   }
-  // the Delaunay 2-complex of the samples
-  CGAL::Delaunay_triangulation_2<K> dt;
-  std::map<Point, std::uint32_t> index_of;
-  for(std::uint32_t i = 0; i < points.size(); ++i) index_of[points[i]] = i;
-  dt.insert(points.begin(), points.end());
-  LOC::Simplicial_complex complex(std::uint32_t(points.size()));
-  for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
-    complex.add_simplex({index_of[f->vertex(0)->point()], index_of[f->vertex(1)->point()], index_of[f->vertex(2)->point()]});
-  if(complex.number_of_simplices(1) == 0) // collinear samples: the edges only
-    for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-      complex.add_simplex({index_of[e->first->vertex(dt.cw(e->second))->point()], index_of[e->first->vertex(dt.ccw(e->second))->point()]});
+  // the Delaunay 2-complex of the samples; its vertex i is the sample index_of[...]
+  CGAL::Delaunay_triangulation_2<K> dt(points.begin(), points.end());
+  const auto tc = LOC::triangulation_complex_2(dt);
+  const LOC::Simplicial_complex& complex = tc.complex;
+  std::map<Point, std::uint32_t> sample_of;
+  for(std::uint32_t i = 0; i < points.size(); ++i) sample_of[points[i]] = i;
+  std::vector<std::uint32_t> sample(tc.vertices.size()), vertex(points.size());
+  for(std::uint32_t v = 0; v < tc.vertices.size(); ++v) vertex[sample[v] = sample_of[tc.vertices[v]->point()]] = v;
 
   // edges by squared length, then by their vertices (a strict total order)
   auto less = [&](const Simplex& a, const Simplex& b) {
-    const double la = CGAL::squared_distance(points[a[0]], points[a[1]]);
-    const double lb = CGAL::squared_distance(points[b[0]], points[b[1]]);
-    return la != lb ? la < lb : a < b;
+    const double la = CGAL::squared_distance(tc.vertices[a[0]]->point(), tc.vertices[a[1]]->point());
+    const double lb = CGAL::squared_distance(tc.vertices[b[0]]->point(), tc.vertices[b[1]]->point());
+    if(la != lb) return la < lb;
+    // ties: by the sorted sample indices, which do not depend on the triangulation's numbering
+    return std::minmax(sample[a[0]], sample[a[1]]) < std::minmax(sample[b[0]], sample[b[1]]);
   };
   const std::vector<std::uint32_t> order = LOC::sort_simplices(complex, 1, less);
   // the boundary: the two ends (vertices are 0-simplices; Z2)
-  LOC::Chain<LOC::Z2_field> ends{{std::uint32_t(complex.index({0})), 1}, {std::uint32_t(complex.index({std::uint32_t(n - 1)})), 1}};
+  LOC::Chain<LOC::Z2_field> ends{{vertex[0], 1}, {vertex[n - 1], 1}}; // vertex i is the 0-simplex i
+  std::sort(ends.begin(), ends.end());
   const auto path = LOC::minimal_chain_with_boundary<LOC::Z2_field>(complex, 1, order, ends);
   std::size_t along = 0;
   for(const auto& e : *path) {
     const Simplex& s = complex.simplex(1, e.first);
-    along += (s[1] == s[0] + 1); // an edge between consecutive samples of the curve
+    const auto ab = std::minmax(sample[s[0]], sample[s[1]]);
+    along += (ab.second == ab.first + 1); // an edge between consecutive samples of the curve
   }
   std::cout << "path of " << path->size() << " edges between the two ends, " << along
             << " of them between consecutive samples of the curve\n";
-  for(const auto& e : *path) std::cout << complex.simplex(1, e.first)[0] << " " << complex.simplex(1, e.first)[1] << "\n";
+  for(const auto& e : *path)
+    std::cout << sample[complex.simplex(1, e.first)[0]] << " " << sample[complex.simplex(1, e.first)[1]] << "\n";
   return 0;
 }

@@ -23,6 +23,7 @@
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/Lex_optimal_chains/minimal_chains.h>
 #include <CGAL/Lex_optimal_chains/Simplex_orders.h>
+#include <CGAL/Lex_optimal_chains/triangulation_complex.h>
 
 #include <algorithm>
 #include <cassert>
@@ -89,6 +90,16 @@ void test_delaunay_2(CGAL::Random& rng)
       expected.insert(s);
     }
     assert(support<Field>(c, 2, *result) == expected);
+    // the complex of the triangulation has the same triangles
+    const auto tc = LOC::triangulation_complex_2(dt);
+    std::set<Simplex> from_helper;
+    for(std::size_t i = 0; i < tc.complex.number_of_simplices(2); ++i) {
+      Simplex s;
+      for(std::uint32_t v : tc.complex.simplex(2, i)) s.push_back(index_of[tc.vertices[v]->point()]);
+      std::sort(s.begin(), s.end());
+      from_helper.insert(s);
+    }
+    assert(from_helper == expected && tc.complex.number_of_simplices(1) == dt.number_of_faces() + dt.number_of_vertices() - 1);
     // oriented fields: every triangle counterclockwise with coefficient 1
     for(const auto& e : *result) {
       const Simplex& s = c.simplex(2, e.first);
@@ -202,6 +213,10 @@ void test_closed_surface_is_lex_ohcp(CGAL::Random& rng)
       points.emplace_back(r * std::sqrt(1 - v * v) * std::cos(u), r * std::sqrt(1 - v * v) * std::sin(u), r * v);
     }
     DT dt(points.begin(), points.end());
+    const auto tc = LOC::triangulation_complex_3(dt);
+    assert(tc.complex.number_of_simplices(3) == dt.number_of_finite_cells() &&
+           tc.complex.number_of_simplices(2) == dt.number_of_finite_facets() &&
+           tc.complex.number_of_simplices(1) == dt.number_of_finite_edges());
     std::map<Point_3, std::uint32_t> index_of;
     for(std::uint32_t i = 0; i < points.size(); ++i) index_of[points[i]] = i;
     const Point_3 inside(0.01, 0.02, 0.03);
