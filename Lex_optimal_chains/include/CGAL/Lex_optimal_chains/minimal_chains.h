@@ -131,8 +131,12 @@ struct Cycle_basis_reduction
   std::vector<std::uint32_t> simplex_of_column, column_of_simplex;
   std::optional<Column_reduction<Field>> reduction;
 
+  // Clearing: the reduced boundary matrix of the (k+1)-simplices (rows = ranks of the
+  // k-simplices) gives, for each of its non-zero columns, a cycle whose lowest simplex is that
+  // column's low: the column of that simplex reduces to zero and takes this cycle as V.
   Cycle_basis_reduction(const Simplicial_complex& complex, int k, const std::vector<std::uint32_t>& order,
-                        const std::vector<char>& in_b_k, const std::vector<char>& in_b_km1)
+                        const std::vector<char>& in_b_k, const std::vector<char>& in_b_km1,
+                        const Column_reduction<Field>* higher = nullptr)
   {
     const std::size_t m = complex.number_of_simplices(k);
     column_of_simplex.assign(m, std::uint32_t(-1));
@@ -147,7 +151,17 @@ struct Cycle_basis_reduction
       std::sort(c.begin(), c.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       columns.push_back(std::move(c));
     }
-    reduction.emplace(std::move(columns), complex.number_of_simplices(k - 1), true);
+    std::vector<std::pair<std::uint32_t, Sparse_column<Field>>> cleared;
+    if(higher != nullptr) {
+      for(std::size_t j = 0; j < higher->number_of_columns(); ++j) {
+        const Sparse_column<Field>& c = higher->reduced(j);
+        if(c.empty()) continue;
+        Sparse_column<Field> v; // rows: ranks -> column positions (increasing with the rank)
+        for(const auto& e : c) v.emplace_back(column_of_simplex[order[e.first]], e.second);
+        cleared.emplace_back(v.back().first, std::move(v));
+      }
+    }
+    reduction.emplace(std::move(columns), complex.number_of_simplices(k - 1), true, std::move(cleared));
   }
 };
 
@@ -235,10 +249,14 @@ std::optional<Chain<Field>> minimal_chain_with_boundary(const Simplicial_complex
       if(!Field::is_zero(b[i]) && !in_b_km2[i])
         throw Input_error(Input_error_code::BOUNDARY_NOT_A_CYCLE, "the given boundary is not a (relative) cycle");
   }
-  internal::ranks_of(order, complex.number_of_simplices(k));
   const std::vector<char> in_b_k = internal::simplices_in(complex, k, relative);
   const std::vector<char> in_b_km1 = internal::simplices_in(complex, k - 1, relative);
-  const internal::Cycle_basis_reduction<Field> basis(complex, k, order, in_b_k, in_b_km1);
+  const std::vector<char> in_b_k1 = internal::simplices_in(complex, k + 1, relative);
+  const std::vector<std::uint32_t> rank = internal::ranks_of(order, complex.number_of_simplices(k));
+  // the boundaries of the (k+1)-simplices, reduced, clear most columns of the k-simplices
+  const internal::Column_reduction<Field> higher(internal::boundary_by_rank<Field>(complex, k, rank, in_b_k, in_b_k1),
+                                                 complex.number_of_simplices(k), false);
+  const internal::Cycle_basis_reduction<Field> basis(complex, k, order, in_b_k, in_b_km1, &higher);
   const auto& reduction = *basis.reduction;
   // Algorithm 6: a representative, by eliminating the boundary with the reduced columns
   const std::size_t rows = complex.number_of_simplices(k - 1);
@@ -303,7 +321,7 @@ std::vector<Chain<Field>> critical_basis(const Simplicial_complex& complex, int 
     }
   } else {
     const std::vector<char> in_b_km1 = internal::simplices_in(complex, k - 1, relative);
-    const internal::Cycle_basis_reduction<Field> cycles(complex, k, order, in_b_k, in_b_km1);
+    const internal::Cycle_basis_reduction<Field> cycles(complex, k, order, in_b_k, in_b_km1, &boundaries);
     for(std::size_t p = 0; p < cycles.simplex_of_column.size(); ++p) {
       if(!cycles.reduction->reduced(p).empty()) continue;
       std::vector<typename Field::Value> g(m, Field::zero());

@@ -51,15 +51,25 @@ public:
   using Column = Sparse_column<Field>;
   static constexpr std::uint32_t none = std::uint32_t(-1);
 
-  // Reduces `columns` (rows below `rows`); keeps V if `track_v`.
-  Column_reduction(std::vector<Column> columns, std::size_t rows, bool track_v)
+  // Reduces `columns` (rows below `rows`); keeps V if `track_v`. `cleared` lists columns
+  // known to reduce to zero with the given V column (the clearing of persistence
+  // libraries): they are not reduced.
+  Column_reduction(std::vector<Column> columns, std::size_t rows, bool track_v,
+                   std::vector<std::pair<std::uint32_t, Column>> cleared = {})
     : r_(std::move(columns)), pivot_(rows, none)
   {
+    std::vector<char> skip(r_.size(), 0);
     if(track_v) {
       v_.resize(r_.size());
       for(std::size_t j = 0; j < r_.size(); ++j) v_[j].emplace_back(std::uint32_t(j), Field::one());
     }
+    for(auto& c : cleared) {
+      skip[c.first] = 1;
+      r_[c.first].clear();
+      if(track_v) v_[c.first] = std::move(c.second);
+    }
     for(std::size_t j = 0; j < r_.size(); ++j) {
+      if(skip[j]) continue;
       while(!r_[j].empty()) {
         const std::uint32_t low = r_[j].back().first;
         const std::uint32_t j0 = pivot_[low];
