@@ -126,19 +126,20 @@ void test_height_field(CGAL::Random& rng)
               << euler_characteristic(terrain) << "\n";
   }
 
-  // identical output for shuffled input
+  // identical output for shuffled input and for two threads (with TBB)
   std::vector<Point> shuffled = points;
   CGAL::cpp98::random_shuffle(shuffled.begin(), shuffled.end(), rng);
-  std::string off[2];
-  for(int k = 0; k < 2; ++k) {
+  std::string off[3];
+  for(int k = 0; k < 3; ++k) {
     Mesh mesh;
-    CGAL::lex_optimal_open_surface_reconstruction(k == 0 ? points : shuffled, boundary, mesh);
+    CGAL::lex_optimal_open_surface_reconstruction(k == 0 ? points : shuffled, boundary, mesh,
+                                                  LOC::parameters::number_of_threads(k == 2 ? 2u : 1u));
     std::ostringstream s;
     s.precision(17);
     s << mesh;
     off[k] = s.str();
   }
-  assert(off[0] == off[1]);
+  assert(off[0] == off[1] && off[0] == off[2]);
 }
 
 // Points on a Möbius strip and its boundary curve (which goes twice around).
