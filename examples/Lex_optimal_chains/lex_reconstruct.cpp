@@ -318,7 +318,7 @@ int main(int argc, char** argv)
   open->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
   auto* b = open->add_option("--boundary", boundary_file, "closed polylines, CGAL's polylines text format");
   auto* a = open->add_flag("--auto-boundary", auto_boundary,
-                           "a polygon just outside the xy-footprint, at the lowest height (terrain tiles); implies --drop-boundary-triangles");
+                           "a polygon just outside the xy-footprint, below the lowest point (terrain tiles); implies --drop-boundary-triangles");
   b->excludes(a);
   open->add_option("--coefficients", coefficients, "z2 (unoriented) or q (oriented, default)");
   open->add_flag("--remove-blocking-points", remove_blocking,

@@ -2,8 +2,9 @@
 // - a noisy height field with the footprint polygon outside gives one disk whose boundary
 //   is exactly the polygon; dropping the skirt leaves the input points only;
 // - the output does not depend on the order of the input points;
-// - a Möbius strip: its Z2 optimum is the non-orientable strip, the Q optimum differs and is
-//   oriented with the given boundary (Fig. 4.25);
+// - a Möbius strip bounded by its boundary curve: the Z2 optimum cannot be oriented (the
+//   mesh is cut to orient it), the Q optimum is a different chain, orientable (Fig. 4.25);
+// - a flat tile (all points coplanar) meshes with the footprint boundary;
 // - a boundary through the cloud is refused, then repaired by removing the blocking points;
 // - bad input gives the documented error and leaves the mesh untouched.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -94,7 +95,10 @@ void test_height_field(CGAL::Random& rng)
               << " representative triangles\n";
     assert(CGAL::is_valid_polygon_mesh(mesh));
     assert(components(mesh) == 1);
-    assert(border_edges(mesh) == polygon_edges); // the boundary is the given polygon
+    // the boundary is the given polygon (an edge of four triangles of the optimum would be
+    // split into border edges: there is none here)
+    assert(report.non_manifold_edges == 0);
+    assert(border_edges(mesh) == polygon_edges);
     assert(euler_characteristic(mesh) == 1);     // a disk
     assert(report.non_manifold_vertices == 0 && report.orientation_cuts == 0);
     assert(report.number_of_boundary_vertices == polygon.size() - 1);
@@ -181,6 +185,19 @@ void test_moebius(CGAL::Random& rng)
   assert(CGAL::is_valid_polygon_mesh(q) && CGAL::is_valid_polygon_mesh(z2));
 }
 
+void test_flat_tile(CGAL::Random& rng)
+{
+  std::vector<Point> points;
+  for(int i = 0; i < 500; ++i) points.emplace_back(rng.get_double(0, 10), rng.get_double(0, 10), 2.0);
+  const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(points)};
+  Mesh mesh;
+  const auto report = CGAL::lex_optimal_open_surface_reconstruction(points, boundary, mesh, LOC::parameters::drop_boundary_triangles(true));
+  // the flat points: the Delaunay triangulation of the plane, one disk
+  assert(components(mesh) == 1 && euler_characteristic(mesh) == 1 && CGAL::is_valid_polygon_mesh(mesh));
+  for(auto v : mesh.vertices()) assert(mesh.point(v).z() == 2.0);
+  std::cout << "flat tile: " << mesh.number_of_faces() << " faces (" << report.dropped_triangles << " dropped)\n";
+}
+
 void test_boundary_through_the_cloud(CGAL::Random& rng)
 {
   const std::vector<Point> points = height_field(rng, 3000, 0.02);
@@ -244,6 +261,7 @@ int main()
   CGAL::Random rng(5);
   test_height_field(rng);
   test_moebius(rng);
+  test_flat_tile(rng);
   test_boundary_through_the_cloud(rng);
   test_bad_input(rng);
   std::cout << "test_open_surface: OK\n";

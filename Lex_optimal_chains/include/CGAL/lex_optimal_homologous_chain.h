@@ -254,7 +254,9 @@ twice has the sum of its coefficients
 
 \returns a report; its triangulation, order and optimal chain fields are filled.
 \throws Lex_optimal_chains::Input_error on a triangulation of dimension below 3, or a facet
-with the infinite vertex in `chain` or in \f$B\f$.
+with the infinite vertex in `chain` or in \f$B\f$ (`INVALID_CHAIN`); with code `TOO_LARGE`
+when an intersection product exceeds 32 bits (see `Lex_optimal_chains::Coefficient_field`) or
+the triangulation has \f$2^{30}\f$ cells or more; `CANCELLED` when the callback cancels.
 */
 template <class DT, class ChainRange, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Open_surface_report
@@ -301,7 +303,7 @@ orientation
 \throws Lex_optimal_chains::Input_error with code `BOUNDARY_EDGE_NOT_IN_TRIANGULATION` if an
 edge of `cycle` is not a finite edge of `dt` (the message gives its vertices),
 `BOUNDARY_NOT_A_CYCLE` if the edges do not form a cycle, and the errors of
-`lex_optimal_homologous_chain()`.
+`lex_optimal_homologous_chain()` (`TOO_LARGE`, `CANCELLED`).
 */
 template <class DT, class EdgeRange, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Open_surface_report

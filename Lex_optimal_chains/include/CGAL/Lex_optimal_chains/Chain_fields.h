@@ -46,9 +46,20 @@ modulo \f$p\f$ unless \f$p\f$ divides a pivot met by the elimination over \f$\ma
 which for the small integer boundary matrices of simplicial complexes is vanishingly unlikely
 with a large \f$p\f$; use `Q_field` when that must be excluded.
 */
+namespace internal {
+constexpr bool is_prime(std::uint32_t p)
+{
+  if(p < 2) return false;
+  for(std::uint32_t d = 2; std::uint64_t(d) * d <= p; ++d)
+    if(p % d == 0) return false;
+  return true;
+}
+} // namespace internal
+
 template <std::uint32_t P = 2147483647u>
 struct Zp_field
 {
+  static_assert(internal::is_prime(P), "Zp_field needs a prime P");
   typedef std::uint32_t Value; ///< in [0, P)
   /// the neutral element of the addition
   static Value zero() { return 0; }

@@ -16,9 +16,11 @@ non-orientable (a Möbius strip). With `Q` chains are oriented: a triangle has a
 coefficient relative to an orientation, the optimal chain is oriented and its boundary is the
 given cycle with its orientation. Algorithms 10 and 11 of the thesis only add and subtract
 coefficients, so an integral input gives an integral result: rational coefficients are
-computed exactly as 64-bit integers (an overflow, which needs coefficients near
-\f$2^{62}\f$, throws `Input_error` with code `TOO_LARGE`). The optimum is linear in the
-input, so a rational input can be scaled by a common denominator.
+computed exactly as integers. The chains have 64-bit coefficients; the intersection products
+kept by the disjoint sets are 32-bit (for speed and memory: one 8-byte node per cell), so a
+product beyond \f$2^{31}-1\f$ in absolute value throws `Input_error` with code `TOO_LARGE`.
+The products are sums of input coefficients along paths: with coefficients \f$\pm1\f$ (a
+polyline boundary) this needs billions of triangles in the representative chain.
 */
 enum class Coefficient_field
 {

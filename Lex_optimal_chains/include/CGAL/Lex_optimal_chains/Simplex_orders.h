@@ -7,12 +7,14 @@
 /// \file Simplex_orders.h
 /// Total orders on the simplices of a `Simplicial_complex` whose vertices are points.
 
+#include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/Simplicial_complex.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 
 #include <CGAL/Exact_rational.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <map>
 #include <memory>
@@ -35,8 +37,15 @@ template <class Point>
 class Triangle_order
 {
 public:
-  /// the order on the triangles of a complex whose vertices are `points`
-  explicit Triangle_order(const std::vector<Point>& points) : points_(&points) {}
+  /// the order on the triangles of a complex whose vertices are `points` (kept by address:
+  /// they must outlive the order). \throws Input_error with code `NON_FINITE_COORDINATE`
+  explicit Triangle_order(const std::vector<Point>& points) : points_(&points)
+  {
+    for(const Point& p : points)
+      for(double c : coordinates(p, 0))
+        if(!std::isfinite(c)) throw Input_error(Input_error_code::NON_FINITE_COORDINATE, "a point has a NaN or infinite coordinate");
+  }
+  Triangle_order(std::vector<Point>&&) = delete; // the points would not outlive the order
 
   /// true if triangle `a` comes before triangle `b`
   bool operator()(const Simplicial_complex::Simplex& a, const Simplicial_complex::Simplex& b) const
@@ -92,9 +101,23 @@ class Weighted_simplex_order
 {
 public:
   /// the order on the simplices of a complex whose vertex `i` is `points[i]` with weight `weights[i]`
+  /// (kept by address: they must outlive the order). \throws Input_error with code
+  /// `NON_FINITE_COORDINATE` on a NaN or infinite coordinate or weight, `INVALID_CHAIN` if the
+  /// sizes differ.
   Weighted_simplex_order(const std::vector<Point>& points, const std::vector<double>& weights)
     : points_(&points), weights_(&weights), cache_(new Cache)
-  {}
+  {
+    if(points.size() != weights.size())
+      throw Input_error(Input_error_code::INVALID_CHAIN, "there must be one weight per point");
+    for(std::uint32_t v = 0; v < points.size(); ++v)
+      for(double c : point(v))
+        if(!std::isfinite(c)) throw Input_error(Input_error_code::NON_FINITE_COORDINATE, "a point has a NaN or infinite coordinate");
+    for(double w : weights)
+      if(!std::isfinite(w)) throw Input_error(Input_error_code::NON_FINITE_COORDINATE, "a weight is NaN or infinite");
+  }
+  Weighted_simplex_order(std::vector<Point>&&, const std::vector<double>&) = delete; // would dangle
+  Weighted_simplex_order(const std::vector<Point>&, std::vector<double>&&) = delete; // would dangle
+  Weighted_simplex_order(std::vector<Point>&&, std::vector<double>&&) = delete;      // would dangle
 
   /// true if `a` comes before `b` (simplices of the same dimension)
   bool operator()(const Simplicial_complex::Simplex& a, const Simplicial_complex::Simplex& b) const
@@ -120,6 +143,7 @@ private:
   };
   struct Cache { std::map<Simplicial_complex::Simplex, Key> keys; };
 
+  static int popcount(unsigned x) { int c = 0; for(; x != 0; x &= x - 1) ++c; return c; }
   static const Value& at(const std::vector<Value>& v, std::size_t j) { return j < v.size() ? v[j] : v.back(); }
   static int compare(const Value& a, const Value& b)
   {
@@ -216,7 +240,7 @@ private:
     auto better = [&](unsigned a, unsigned b) {
       const int c = compare(weight(a), weight(b));
       if(c != 0) return c < 0;
-      if(__builtin_popcount(a) != __builtin_popcount(b)) return __builtin_popcount(a) < __builtin_popcount(b);
+      if(popcount(a) != popcount(b)) return popcount(a) < popcount(b);
       return sorted_points(face_of(a)) < sorted_points(face_of(b));
     };
     // Theta: the best face whose circumsphere is orthogonal or further to every vertex

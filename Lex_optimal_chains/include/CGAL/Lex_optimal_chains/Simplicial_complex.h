@@ -26,7 +26,10 @@ lexicographic order of their tuples; this numbering is only a name, the algorith
 order on simplices as a separate argument.
 
 The complex is closed under faces: it is built from maximal simplices (`add_simplex()` adds
-a simplex with all its faces). The boundary of the simplex \f$[v_0,\dots,v_k]\f$ is
+a simplex with all its faces). Adding simplices after a query renumbers the simplices: build
+the complex first, then number, order and compute. The queries finalize the numbering on
+first use, so a complex shared between threads must be queried once before. Simplices have
+dimension 15 at most. The boundary of the simplex \f$[v_0,\dots,v_k]\f$ is
 \f$\sum_i (-1)^i [v_0,\dots,\hat{v_i},\dots,v_k]\f$ (orientation by increasing vertices).
 */
 class Simplicial_complex
@@ -42,13 +45,14 @@ public:
   }
 
   /// Adds the simplex with the given vertices (in any order, distinct, below the number of
-  /// vertices) and all its faces. \throws Input_error with code `INVALID_CHAIN` otherwise.
+  /// vertices) and all its faces. \throws Input_error with code `INVALID_CHAIN` otherwise,
+  /// `TOO_LARGE` for a dimension above 15.
   void add_simplex(Simplex s)
   {
     std::sort(s.begin(), s.end());
     if(s.empty() || std::adjacent_find(s.begin(), s.end()) != s.end() || s.back() >= n_)
       throw Input_error(Input_error_code::INVALID_CHAIN, "a simplex must have distinct vertices below the number of vertices");
-    if(s.size() > 31) throw Input_error(Input_error_code::TOO_LARGE, "simplices of dimension 30 or more are not supported");
+    if(s.size() > 16) throw Input_error(Input_error_code::TOO_LARGE, "simplices of dimension 16 or more are not supported (2^17 faces)");
     const std::size_t k = s.size() - 1;
     if(pending_.size() <= k) pending_.resize(k + 1);
     if(!pending_[k].insert(s).second) return;
@@ -105,9 +109,10 @@ public:
     return b;
   }
 
-  /// The full `d`-complex over `n` vertices: every simplex of dimension at most `d`.
+  /// The full `d`-complex over `n` vertices: every simplex of dimension at most `d` (in [0, 15]).
   static Simplicial_complex full(std::uint32_t n, int d)
   {
+    if(d < 0 || d > 15) throw Input_error(Input_error_code::TOO_LARGE, "the dimension of a full complex must be in [0, 15]");
     Simplicial_complex c(n);
     Simplex s;
     // enumerate the (d+1)-subsets (they carry all smaller simplices as faces); smaller

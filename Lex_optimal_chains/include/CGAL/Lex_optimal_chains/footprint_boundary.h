@@ -30,10 +30,11 @@ Placement: the bounding rectangle of the points in the \f$xy\f$-plane is enlarge
 margin of `margin` times its larger side on every side; each side is cut into
 `vertices_per_side` edges whose vertices are pushed outward on a parabola (at most half the
 margin at the middle of a side), so that the polygon is strictly convex. All its vertices are
-at the height of the lowest point. The points then lie strictly inside the vertical prism
-over the polygon, so every polygon vertex is a vertex, and every polygon edge an edge, of
-the convex hull of the points and the polygon, hence of their Delaunay triangulation: the
-boundary is always in the triangulation. The polygon turns counterclockwise seen from
+slightly below the lowest point (by a thousandth of the larger side, so that a flat tile is
+not coplanar with them). The points
+then lie strictly inside the vertical prism over the polygon, so every polygon vertex is a
+vertex, and every polygon edge an edge, of the convex hull of the points and the polygon,
+hence of their Delaunay triangulation: the boundary is always in the triangulation. The polygon turns counterclockwise seen from
 above, so that over Q the reconstructed surface is oriented upward. Its first vertex is
 repeated at its end.
 
@@ -85,7 +86,7 @@ footprint_boundary(const PointRange& points, const NamedParameters& np = paramet
     for(int k = 0; k < vertices_per_side; ++k) {
       const double t = double(k) / vertices_per_side;
       const double bulge = 0.5 * m * 4 * t * (1 - t);
-      polygon.emplace_back(cx[s] + t * (cx[e] - cx[s]) + bulge * nx[s], cy[s] + t * (cy[e] - cy[s]) + bulge * ny[s], zmin);
+      polygon.emplace_back(cx[s] + t * (cx[e] - cx[s]) + bulge * nx[s], cy[s] + t * (cy[e] - cy[s]) + bulge * ny[s], zmin - 0.001 * side);
     }
   }
   polygon.push_back(polygon.front());

@@ -34,9 +34,8 @@ struct Integer_arithmetic
   static Value zero() { return 0; }
   static Value add(Value a, Value b)
   {
-    Value s;
-    if(__builtin_add_overflow(a, b, &s)) overflow();
-    return s;
+    if((b > 0 && a > INT64_MAX - b) || (b < 0 && a < INT64_MIN - b)) overflow();
+    return a + b;
   }
   static Value negate(Value a)
   {
