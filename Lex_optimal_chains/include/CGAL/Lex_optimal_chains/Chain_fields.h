@@ -38,14 +38,6 @@ struct Z2_field
   static Value from_integer(long k) { return Value(k & 1); }
 };
 
-/*!
-\ingroup PkgLexOptimalChainsRef
-The prime field \f$\mathbb{Z}/p\mathbb{Z}\f$ (default \f$p = 2^{31}-1\f$): oriented chains,
-a fast stand-in for \f$\mathbb{Q}\f$. It gives the result over \f$\mathbb{Q}\f$ reduced
-modulo \f$p\f$ unless \f$p\f$ divides a pivot met by the elimination over \f$\mathbb{Q}\f$,
-which for the small integer boundary matrices of simplicial complexes is vanishingly unlikely
-with a large \f$p\f$; use `Q_field` when that must be excluded.
-*/
 namespace internal {
 constexpr bool is_prime(std::uint32_t p)
 {
@@ -56,6 +48,14 @@ constexpr bool is_prime(std::uint32_t p)
 }
 } // namespace internal
 
+/*!
+\ingroup PkgLexOptimalChainsRef
+The prime field \f$\mathbb{Z}/p\mathbb{Z}\f$ (default \f$p = 2^{31}-1\f$): oriented chains,
+a fast stand-in for \f$\mathbb{Q}\f$. It gives the result over \f$\mathbb{Q}\f$ reduced
+modulo \f$p\f$ unless \f$p\f$ divides a pivot met by the elimination over \f$\mathbb{Q}\f$,
+which for the small integer boundary matrices of simplicial complexes is vanishingly unlikely
+with a large \f$p\f$; use `Q_field` when that must be excluded.
+*/
 template <std::uint32_t P = 2147483647u>
 struct Zp_field
 {
