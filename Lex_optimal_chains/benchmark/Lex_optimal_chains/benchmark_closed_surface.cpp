@@ -13,7 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/lex_optimal_closed_surface.h>
 
-#include <sys/resource.h>
+#include "benchmark_support.h"
 
 #include <array>
 #include <cmath>
@@ -29,13 +29,6 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
-
-static double peak_rss_mb()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_maxrss) / 1024.0;
-}
 
 // n points on a torus (R = 1, r = 0.4), uniform by area, with noise of 0.2% of r
 static std::vector<Point> noisy_torus(std::size_t n)
@@ -90,28 +83,6 @@ static int one(const std::string& mode, std::size_t n)
   return 0;
 }
 
-static std::map<std::string, double> run_child(const std::string& self, const std::string& mode, std::size_t n)
-{
-  const std::string cmd = self + " --one " + mode + " " + std::to_string(n);
-  std::map<std::string, double> values;
-  FILE* p = popen(cmd.c_str(), "r");
-  if(!p) return values;
-  std::string out;
-  char buf[4096];
-  while(fgets(buf, sizeof buf, p)) out += buf;
-  pclose(p);
-  // flat JSON of numbers: "key":value pairs
-  std::size_t pos = 0;
-  while((pos = out.find('"', pos)) != std::string::npos) {
-    const std::size_t end = out.find('"', pos + 1);
-    const std::string key = out.substr(pos + 1, end - pos - 1);
-    pos = end + 1;
-    if(pos < out.size() && out[pos] == ':' && out[pos + 1] != '"') values[key] = std::atof(out.c_str() + pos + 1);
-  }
-  std::cerr << out;
-  return values;
-}
-
 int main(int argc, char** argv)
 {
   if(argc == 4 && std::string(argv[1]) == "--one") return one(argv[2], std::stoul(argv[3]));
@@ -127,10 +98,10 @@ int main(int argc, char** argv)
   std::cout << std::fixed << std::setprecision(3)
             << "points     delaunay_s  lex_total_s  order+cut_s  (order+cut)/DT  total/DT  peakRSS_lex/DT  afsr_s  afsr/lex\n";
   for(std::size_t n : sizes) {
-    auto d = run_child(argv[0], "delaunay", n);
-    auto l = run_child(argv[0], "lex", n);
+    auto d = run_child(std::string(argv[0]) + " --one delaunay " + std::to_string(n));
+    auto l = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n));
     std::map<std::string, double> a;
-    if(n <= 1000000) a = run_child(argv[0], "afsr", n);
+    if(n <= 1000000) a = run_child(std::string(argv[0]) + " --one afsr " + std::to_string(n));
     const double dt = d["delaunay_s"], oc = l["order_s"] + l["cut_s"];
     std::cout << std::setw(9) << n << "  " << std::setw(10) << dt << "  " << std::setw(11) << l["total_s"] << "  "
               << std::setw(11) << oc << "  " << std::setw(14) << oc / dt << "  " << std::setw(8) << l["total_s"] / dt

@@ -13,7 +13,7 @@
 #include <CGAL/Lex_optimal_chains/minimal_chains.h>
 #include <CGAL/Lex_optimal_chains/Simplex_orders.h>
 
-#include <sys/resource.h>
+#include "benchmark_support.h"
 
 #include <cmath>
 #include <cstdio>
@@ -28,13 +28,6 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 namespace LOC = CGAL::Lex_optimal_chains;
-
-static double peak_rss_mb()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_maxrss) / 1024.0;
-}
 
 static int one(std::size_t n)
 {
@@ -73,26 +66,6 @@ static int one(std::size_t n)
   return 0;
 }
 
-static std::map<std::string, double> run_child(const std::string& self, std::size_t n)
-{
-  std::map<std::string, double> values;
-  FILE* p = popen((self + " --one " + std::to_string(n)).c_str(), "r");
-  if(!p) return values;
-  std::string out;
-  char buf[4096];
-  while(fgets(buf, sizeof buf, p)) out += buf;
-  pclose(p);
-  std::cerr << out;
-  std::size_t pos = 0;
-  while((pos = out.find('"', pos)) != std::string::npos) {
-    const std::size_t end = out.find('"', pos + 1);
-    const std::string key = out.substr(pos + 1, end - pos - 1);
-    pos = end + 1;
-    if(pos < out.size() && out[pos] == ':') values[key] = std::atof(out.c_str() + pos + 1);
-  }
-  return values;
-}
-
 int main(int argc, char** argv)
 {
   if(argc == 3 && std::string(argv[1]) == "--one") return one(std::stoul(argv[2]));
@@ -102,7 +75,7 @@ int main(int argc, char** argv)
   std::cout << "points  triangles  homologous_s (d3)  exponent  with_boundary_s (d2)  exponent  peak_MB\n";
   std::map<std::string, double> previous;
   for(std::size_t n : sizes) {
-    auto v = run_child(argv[0], n);
+    auto v = run_child(std::string(argv[0]) + " --one " + std::to_string(n));
     auto exponent = [&](const char* key) {
       if(previous.empty() || previous[key] <= 0) return std::string("   -");
       std::ostringstream s;

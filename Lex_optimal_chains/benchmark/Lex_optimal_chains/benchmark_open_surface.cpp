@@ -14,7 +14,7 @@
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 
-#include <sys/resource.h>
+#include "benchmark_support.h"
 
 #include <cmath>
 #include <cstdio>
@@ -30,13 +30,6 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace LOC = CGAL::Lex_optimal_chains;
-
-static double peak_rss_mb()
-{
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_maxrss) / 1024.0;
-}
 
 // n points on a 1 km x 1 km terrain: hills, a grid of flat-roofed blocks 12 m high, noise 5 cm
 static std::vector<Point> noisy_terrain(std::size_t n)
@@ -89,27 +82,6 @@ static int one(const std::string& mode, std::size_t n, bool verbose)
   return 0;
 }
 
-static std::map<std::string, double> run_child(const std::string& self, const std::string& mode, std::size_t n)
-{
-  const std::string cmd = self + " --one " + mode + " " + std::to_string(n);
-  std::map<std::string, double> values;
-  FILE* p = popen(cmd.c_str(), "r");
-  if(!p) return values;
-  std::string out;
-  char buf[4096];
-  while(fgets(buf, sizeof buf, p)) out += buf;
-  pclose(p);
-  std::size_t pos = 0; // flat JSON of numbers: "key":value pairs
-  while((pos = out.find('"', pos)) != std::string::npos) {
-    const std::size_t end = out.find('"', pos + 1);
-    const std::string key = out.substr(pos + 1, end - pos - 1);
-    pos = end + 1;
-    if(pos < out.size() && out[pos] == ':' && out[pos + 1] != '"') values[key] = std::atof(out.c_str() + pos + 1);
-  }
-  std::cerr << out;
-  return values;
-}
-
 int main(int argc, char** argv)
 {
   if(argc == 4 && std::string(argv[1]) == "--one") return one(argv[2], std::stoul(argv[3]), false);
@@ -121,8 +93,8 @@ int main(int argc, char** argv)
             << "points     delaunay_s  representative_s  order_s  alg10_s  optimal_chain_s  output_s  total_s"
                "  repr/DT  chain/DT  total/DT  peak_GB  peak/DT\n";
   for(std::size_t n : sizes) {
-    auto d = run_child(argv[0], "delaunay", n);
-    auto l = run_child(argv[0], "lex", n);
+    auto d = run_child(std::string(argv[0]) + " --one delaunay " + std::to_string(n));
+    auto l = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n));
     const double dt = d["delaunay_s"], chain = l["order_s"] + l["algorithm10_s"];
     std::cout << std::setw(9) << n << "  " << std::setw(10) << dt << "  " << std::setw(16) << l["representative_s"]
               << "  " << std::setw(7) << l["order_s"] << "  " << std::setw(7) << l["algorithm10_s"] << "  "

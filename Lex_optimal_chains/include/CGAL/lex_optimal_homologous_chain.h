@@ -201,6 +201,23 @@ void optimal_chain_with_boundary(const Triangulation& dt, const EdgeRange& cycle
     }, callback, progress_from, out, report);
 }
 
+
+// The frame of the public functions on a triangulation: the callback, the checks, the timing,
+// and the choice of the coefficients; `run(arithmetic, callback, report)` does the work.
+template <class Triangulation, class NamedParameters, class Run>
+Open_surface_report run_on_triangulation(const Triangulation& dt, const NamedParameters& np, const Run& run)
+{
+  const std::function<bool(double)> callback = parameters::choose_parameter(
+    parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  Open_surface_report report;
+  Stopwatch total;
+  check_dimension(dt);
+  if(coefficient_field_of(np) == Coefficient_field::Z2) run(Z2_arithmetic(), callback, report);
+  else run(Integer_arithmetic(), callback, report);
+  if(callback) callback(1.0);
+  report.total_seconds = total.lap();
+  return report;
+}
 } // namespace internal
 } // namespace Lex_optimal_chains
 
@@ -263,20 +280,11 @@ Lex_optimal_chains::Open_surface_report
 lex_optimal_homologous_chain(const DT& dt, const ChainRange& chain, OutputIterator out,
                              const NamedParameters& np = parameters::default_values())
 {
-  namespace LOC = Lex_optimal_chains;
-  const std::function<bool(double)> callback = parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  LOC::Open_surface_report report;
-  LOC::internal::Stopwatch total;
-  LOC::internal::check_dimension(dt);
-  auto add_chain = [&](const auto& add) { for(const auto& fk : chain) add(fk.first, std::int64_t(fk.second)); };
-  if(LOC::internal::coefficient_field_of(np) == LOC::Coefficient_field::Z2)
-    LOC::internal::optimal_chain<LOC::internal::Z2_arithmetic>(dt, np, add_chain, callback, 0.0, out, report);
-  else
-    LOC::internal::optimal_chain<LOC::internal::Integer_arithmetic>(dt, np, add_chain, callback, 0.0, out, report);
-  if(callback) callback(1.0);
-  report.total_seconds = total.lap();
-  return report;
+  return Lex_optimal_chains::internal::run_on_triangulation(dt, np, [&](auto arithmetic, const auto& callback, auto& report) {
+    using Arithmetic = decltype(arithmetic);
+    auto add_chain = [&](const auto& add) { for(const auto& fk : chain) add(fk.first, std::int64_t(fk.second)); };
+    Lex_optimal_chains::internal::optimal_chain<Arithmetic>(dt, np, add_chain, callback, 0.0, out, report);
+  });
 }
 
 /*!
@@ -310,19 +318,10 @@ Lex_optimal_chains::Open_surface_report
 lex_optimal_chain_with_boundary(const DT& dt, const EdgeRange& cycle, OutputIterator out,
                                 const NamedParameters& np = parameters::default_values())
 {
-  namespace LOC = Lex_optimal_chains;
-  const std::function<bool(double)> callback = parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  LOC::Open_surface_report report;
-  LOC::internal::Stopwatch total;
-  LOC::internal::check_dimension(dt);
-  if(LOC::internal::coefficient_field_of(np) == LOC::Coefficient_field::Z2)
-    LOC::internal::optimal_chain_with_boundary<LOC::internal::Z2_arithmetic>(dt, cycle, np, callback, 0.0, out, report);
-  else
-    LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.0, out, report);
-  if(callback) callback(1.0);
-  report.total_seconds = total.lap();
-  return report;
+  return Lex_optimal_chains::internal::run_on_triangulation(dt, np, [&](auto arithmetic, const auto& callback, auto& report) {
+    using Arithmetic = decltype(arithmetic);
+    Lex_optimal_chains::internal::optimal_chain_with_boundary<Arithmetic>(dt, cycle, np, callback, 0.0, out, report);
+  });
 }
 
 } // namespace CGAL
