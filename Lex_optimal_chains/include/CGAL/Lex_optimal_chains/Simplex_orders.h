@@ -53,6 +53,12 @@ public:
     return internal::compare_triangle_order(coordinates(a), coordinates(b)) == SMALLER;
   }
 
+  /// the comparison key of a triangle (its radii computed once), for `sort_simplices()`
+  internal::Triangle_order_key_3 key(const Simplicial_complex::Simplex& s) const
+  {
+    return internal::Triangle_order_key_3(coordinates(s));
+  }
+
 private:
   internal::Triangle_coordinates_3 coordinates(const Simplicial_complex::Simplex& s) const
   {

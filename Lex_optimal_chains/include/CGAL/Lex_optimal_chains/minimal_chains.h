@@ -39,14 +39,34 @@ vertices). The result is the *order* argument of the functions of this header.
 \throws Input_error with code `INVALID_CHAIN` if `less` is not a strict total order on them
 (two simplices neither smaller than the other).
 */
+namespace internal {
+// orders with a `key()` (computed once per simplex) are sorted on their keys
+template <class Less>
+auto sort_by_keys(const Simplicial_complex& complex, int k, const Less& less, std::vector<std::uint32_t>& order, int)
+  -> decltype(less.key(complex.simplex(k, 0)), void())
+{
+  using Key = decltype(less.key(complex.simplex(k, 0)));
+  std::vector<std::pair<Key, std::uint32_t>> keyed;
+  keyed.reserve(order.size());
+  for(std::uint32_t i : order) keyed.emplace_back(less.key(complex.simplex(k, i)), i);
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return compare(a.first, b.first) == SMALLER; });
+  for(std::size_t r = 0; r < keyed.size(); ++r) order[r] = keyed[r].second;
+}
+template <class Less>
+void sort_by_keys(const Simplicial_complex& complex, int k, const Less& less, std::vector<std::uint32_t>& order, long)
+{
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return less(complex.simplex(k, a), complex.simplex(k, b));
+  });
+}
+} // namespace internal
+
 template <class Less>
 std::vector<std::uint32_t> sort_simplices(const Simplicial_complex& complex, int k, const Less& less)
 {
   std::vector<std::uint32_t> order(complex.number_of_simplices(k));
   for(std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return less(complex.simplex(k, a), complex.simplex(k, b));
-  });
+  internal::sort_by_keys(complex, k, less, order, 0);
   for(std::size_t i = 1; i < order.size(); ++i)
     if(!less(complex.simplex(k, order[i - 1]), complex.simplex(k, order[i])))
       throw Input_error(Input_error_code::INVALID_CHAIN, "the order is not a strict total order on the simplices");
