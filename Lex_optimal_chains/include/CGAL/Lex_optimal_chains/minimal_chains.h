@@ -31,14 +31,6 @@ sorted by index. The coefficient of a simplex refers to its orientation by incre
 template <class Field>
 using Chain = std::vector<std::pair<std::uint32_t, typename Field::Value>>;
 
-/*!
-\ingroup PkgLexOptimalChainsRef
-The `k`-simplices of `complex` sorted increasingly by the strict total order `less`, a
-functor called on two simplices (`const Simplicial_complex::Simplex&`, their increasing
-vertices). The result is the *order* argument of the functions of this header.
-\throws Input_error with code `INVALID_CHAIN` if `less` is not a strict total order on them
-(two simplices neither smaller than the other).
-*/
 namespace internal {
 // orders with a `key()` (computed once per simplex) are sorted on their keys
 template <class Less>
@@ -61,6 +53,14 @@ void sort_by_keys(const Simplicial_complex& complex, int k, const Less& less, st
 }
 } // namespace internal
 
+/*!
+\ingroup PkgLexOptimalChainsRef
+The `k`-simplices of `complex` sorted increasingly by the strict total order `less`, a
+functor called on two simplices (`const Simplicial_complex::Simplex&`, their increasing
+vertices). The result is the *order* argument of the functions of this header.
+\throws Input_error with code `INVALID_CHAIN` if `less` is not a strict total order on them
+(two simplices neither smaller than the other).
+*/
 template <class Less>
 std::vector<std::uint32_t> sort_simplices(const Simplicial_complex& complex, int k, const Less& less)
 {
