@@ -192,6 +192,24 @@ static void add_mesh_statistics(nlohmann::json& j, const Mesh& mesh)
   j["genus"] = t.genus;
 }
 
+// the keys common to both subcommands: the run, its shared timings, and the written mesh
+template <class Report>
+static void add_common_statistics(nlohmann::json& j, const std::string& input, const std::string& output,
+                                  const Report& r, double io_seconds, const Mesh& mesh)
+{
+  j["input"] = input;
+  j["output"] = output;
+  j["points"] = r.number_of_input_points;
+  j["delaunay_s"] = r.delaunay_seconds;
+  j["order_s"] = r.order_seconds;
+  j["output_s"] = r.output_seconds + io_seconds;
+  j["total_s"] = r.total_seconds + io_seconds;
+  j["peak_rss_mb"] = peak_rss_mb();
+  add_mesh_statistics(j, mesh);
+  j["non_manifold_vertices"] = r.non_manifold_vertices;
+  j["non_manifold_edges"] = r.non_manifold_edges;
+}
+
 static int run_closed(const std::string& input, const std::string& output, const std::vector<std::string>& interior_text,
                       const std::vector<std::string>& exterior_text, unsigned threads, bool json)
 {
@@ -214,19 +232,9 @@ static int run_closed(const std::string& input, const std::string& output, const
   io.stop();
   if(json) {
     nlohmann::json j;
-    j["input"] = input;
-    j["output"] = output;
-    j["points"] = r.number_of_input_points;
-    j["delaunay_s"] = r.delaunay_seconds;
-    j["order_s"] = r.order_seconds;
+    add_common_statistics(j, input, output, r, io.time(), mesh);
     j["cut_s"] = r.cut_seconds;
-    j["output_s"] = r.output_seconds + io.time();
-    j["total_s"] = r.total_seconds + io.time();
-    j["peak_rss_mb"] = peak_rss_mb();
-    add_mesh_statistics(j, mesh);
     j["genus"] = r.genus; // of the closed components, as split by the documented rule
-    j["non_manifold_vertices"] = r.non_manifold_vertices;
-    j["non_manifold_edges"] = r.non_manifold_edges;
     j["automatic_interior"] = r.automatic_interior;
     j["interior_persistence"] = r.interior_persistence;
     j["triangles"] = r.number_of_triangles;
@@ -267,20 +275,10 @@ static int run_open(const std::string& input, const std::string& output, const s
   io.stop();
   if(json) {
     nlohmann::json j;
-    j["input"] = input;
-    j["output"] = output;
-    j["points"] = r.number_of_input_points;
+    add_common_statistics(j, input, output, r, io.time(), mesh);
     j["coefficients"] = coefficients;
-    j["delaunay_s"] = r.delaunay_seconds;
     j["representative_s"] = r.representative_seconds;
-    j["order_s"] = r.order_seconds;
     j["optimal_chain_s"] = r.optimal_chain_seconds;
-    j["output_s"] = r.output_seconds + io.time();
-    j["total_s"] = r.total_seconds + io.time();
-    j["peak_rss_mb"] = peak_rss_mb();
-    add_mesh_statistics(j, mesh);
-    j["non_manifold_vertices"] = r.non_manifold_vertices;
-    j["non_manifold_edges"] = r.non_manifold_edges;
     j["orientation_cuts"] = r.orientation_cuts;
     j["boundary_vertices_added"] = r.number_of_boundary_vertices;
     j["removed_points"] = r.number_of_removed_points;

@@ -283,6 +283,39 @@ LOC::Simplicial_complex random_complex(CGAL::Random& rng, std::uint32_t n, int s
   return c;
 }
 
+// the boundary of a k-chain
+template <class Field>
+LOC::Chain<Field> boundary_of(const LOC::Simplicial_complex& c, int k, const LOC::Chain<Field>& chain)
+{
+  std::map<std::uint32_t, typename Field::Value> b;
+  for(const auto& e : chain)
+    for(const auto& fs : c.boundary(k, e.first))
+      b[fs.first] = Field::add(b.count(fs.first) ? b[fs.first] : Field::zero(), Field::multiply(Field::from_integer(fs.second), e.second));
+  LOC::Chain<Field> result;
+  for(const auto& e : b) if(!Field::is_zero(e.second)) result.push_back(e);
+  return result;
+}
+
+// Z2 brute force: the smallest chain g + (any sum of boundaries of (k+1)-simplices), the
+// simplices of `excluded` (bits by rank) removed; chains as bits by rank
+std::uint64_t brute_force_minimum(const LOC::Simplicial_complex& c, int k, const std::vector<std::uint32_t>& rank,
+                                  std::uint64_t g, std::uint64_t excluded)
+{
+  std::vector<std::uint64_t> columns;
+  for(std::size_t j = 0; j < c.number_of_simplices(k + 1); ++j) {
+    std::uint64_t col = 0;
+    for(const auto& fs : c.boundary(k + 1, j)) col ^= std::uint64_t(1) << rank[fs.first];
+    columns.push_back(col);
+  }
+  std::uint64_t best = ~std::uint64_t(0);
+  for(std::uint64_t sub = 0; sub < (std::uint64_t(1) << columns.size()); ++sub) {
+    std::uint64_t x = g;
+    for(std::size_t i = 0; i < columns.size(); ++i) if(sub >> i & 1) x ^= columns[i];
+    best = (std::min)(best, x & ~excluded);
+  }
+  return best;
+}
+
 template <class Field>
 void test_properties(CGAL::Random& rng, bool z2)
 {
@@ -311,77 +344,30 @@ void test_properties(CGAL::Random& rng, bool z2)
       with_boundary = combine<Field>(g1, Field::one(), bd, Field::from_integer(rng.get_int(1, 3)));
     }
     assert(LOC::minimal_homologous_chain<Field>(c, k, order, with_boundary) == m1);
-    // Z2 brute force over all (k+1)-chains
+    // Z2 brute force over all (k+1)-chains, absolute, then relative to a random subcomplex B
     if(z2 && c.number_of_simplices(k + 1) <= 12 && m <= 60) {
-      std::vector<std::uint64_t> columns;
       std::vector<std::uint32_t> rank(m);
       for(std::uint32_t r = 0; r < m; ++r) rank[order[r]] = r;
-      for(std::size_t j = 0; j < c.number_of_simplices(k + 1); ++j) {
-        std::uint64_t col = 0;
-        for(const auto& fs : c.boundary(k + 1, j)) col ^= std::uint64_t(1) << rank[fs.first];
-        columns.push_back(col);
-      }
-      std::uint64_t g = 0;
-      for(const auto& e : g1) g ^= std::uint64_t(1) << rank[e.first];
-      std::uint64_t best = g;
-      for(std::uint64_t s = 0; s < (std::uint64_t(1) << columns.size()); ++s) {
-        std::uint64_t x = g;
-        for(std::size_t i = 0; i < columns.size(); ++i) if(s >> i & 1) x ^= columns[i];
-        best = (std::min)(best, x);
-      }
-      std::uint64_t got = 0;
-      for(const auto& e : m1) got ^= std::uint64_t(1) << rank[e.first];
-      assert(got == best);
+      auto bits = [&](const LOC::Chain<Field>& x) { std::uint64_t b = 0; for(const auto& e : x) b ^= std::uint64_t(1) << rank[e.first]; return b; };
+      assert(bits(m1) == brute_force_minimum(c, k, rank, bits(g1), 0));
       ++brute;
-    }
-    // relative to a random subcomplex B, Z2 brute force: the minimum over g1 + boundaries,
-    // with the simplices of B removed
-    if(z2 && c.number_of_simplices(k + 1) <= 12 && m <= 60) {
       LOC::Simplicial_complex b(c.number_of_vertices());
       for(int i = rng.get_int(1, 4); i > 0; --i) {
         const int d = rng.get_int(0, k + 1);
         if(c.number_of_simplices(d) > 0) b.add_simplex(c.simplex(d, std::size_t(rng.get_int(0, int(c.number_of_simplices(d))))));
       }
-      std::vector<std::uint32_t> rank(m);
-      for(std::uint32_t r = 0; r < m; ++r) rank[order[r]] = r;
       std::uint64_t in_b = 0;
       for(std::size_t i = 0; i < b.number_of_simplices(k); ++i) in_b |= std::uint64_t(1) << rank[c.index(b.simplex(k, i))];
-      std::vector<std::uint64_t> columns;
-      for(std::size_t j = 0; j < c.number_of_simplices(k + 1); ++j) {
-        std::uint64_t col = 0;
-        for(const auto& fs : c.boundary(k + 1, j)) col ^= std::uint64_t(1) << rank[fs.first];
-        columns.push_back(col);
-      }
-      std::uint64_t g = 0;
-      for(const auto& e : g1) g ^= std::uint64_t(1) << rank[e.first];
-      std::uint64_t best = ~std::uint64_t(0);
-      for(std::uint64_t sub = 0; sub < (std::uint64_t(1) << columns.size()); ++sub) {
-        std::uint64_t x = g;
-        for(std::size_t i = 0; i < columns.size(); ++i) if(sub >> i & 1) x ^= columns[i];
-        best = (std::min)(best, x & ~in_b);
-      }
-      std::uint64_t got = 0;
-      for(const auto& e : LOC::minimal_homologous_chain<Field>(c, k, order, g1, &b)) got ^= std::uint64_t(1) << rank[e.first];
-      assert(got == best);
+      assert(bits(LOC::minimal_homologous_chain<Field>(c, k, order, g1, &b)) == brute_force_minimum(c, k, rank, bits(g1), in_b));
       ++relative_brute;
     }
     // imposed boundary: the boundary of a random chain is bounded, the minimum is at most it
     if(k >= 1) {
-      std::map<std::uint32_t, typename Field::Value> bd;
-      for(const auto& e : g1)
-        for(const auto& fs : c.boundary(k, e.first))
-          bd[fs.first] = Field::add(bd.count(fs.first) ? bd[fs.first] : Field::zero(), Field::multiply(Field::from_integer(fs.second), e.second));
-      LOC::Chain<Field> boundary;
-      for(const auto& e : bd) if(!Field::is_zero(e.second)) boundary.push_back(e);
+      const LOC::Chain<Field> boundary = boundary_of<Field>(c, k, g1);
       const auto minimal = LOC::minimal_chain_with_boundary<Field>(c, k, order, boundary);
       assert(minimal);
       // it has that boundary, and is not larger than g1, which has it too
-      std::map<std::uint32_t, typename Field::Value> bm;
-      for(const auto& e : *minimal)
-        for(const auto& fs : c.boundary(k, e.first))
-          bm[fs.first] = Field::add(bm.count(fs.first) ? bm[fs.first] : Field::zero(), Field::multiply(Field::from_integer(fs.second), e.second));
-      LOC::Chain<Field> minimal_boundary;
-      for(const auto& e : bm) if(!Field::is_zero(e.second)) minimal_boundary.push_back(e);
+      const LOC::Chain<Field> minimal_boundary = boundary_of<Field>(c, k, *minimal);
       assert(minimal_boundary == boundary);
       std::vector<std::uint32_t> rank(m);
       for(std::uint32_t r = 0; r < m; ++r) rank[order[r]] = r;
