@@ -1,0 +1,404 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_2_H
+
+#include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
+
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+
+/*!
+\ingroup PkgPolygonPartitionSimplificationRef
+The fidelity metric of a line (Eq. 3.5 of the thesis without its \f$l_{min}\f$ term): the
+symmetric matrix \f$\frac12\sum_{s}\sum_{(x,y)\in s}(x,y,1)^T(x,y,1)\f$ summed over the
+endpoints of the segments the line comes from. \f$L^T M L\f$ is the sum of the squared
+distances from these endpoints to the line \f$L\f$ (in normal form), halved.
+*/
+struct Line_metric
+{
+  /// entries xx, xy, x, yy, y, 1 of the symmetric 3x3 matrix
+  std::array<double, 6> entries{{0, 0, 0, 0, 0, 0}};
+
+  /// adds the contribution of the segment (x0, y0)-(x1, y1)
+  void add_segment(double x0, double y0, double x1, double y1)
+  {
+    entries[0] += 0.5 * (x0 * x0 + x1 * x1);
+    entries[1] += 0.5 * (x0 * y0 + x1 * y1);
+    entries[2] += 0.5 * (x0 + x1);
+    entries[3] += 0.5 * (y0 * y0 + y1 * y1);
+    entries[4] += 0.5 * (y0 + y1);
+    entries[5] += 1.;
+  }
+
+  /// metric accumulation \f$M_f = M_i + M_j\f$ when two lines merge
+  Line_metric& operator+=(const Line_metric& other)
+  {
+    for(int i = 0; i < 6; ++i) entries[i] += other.entries[i];
+    return *this;
+  }
+
+  /// the entry (row, column) of the matrix
+  double operator()(int row, int column) const
+  {
+    static const int index[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+    return entries[index[row][column]];
+  }
+};
+
+/*!
+\ingroup PkgPolygonPartitionSimplificationRef
+
+A 2D polygonal partition in line representation (section 3.3.2 of the thesis): the lines
+carry explicit coordinates \f$(a, b, c)\f$ in Euclidean normal form \f$a^2 + b^2 = 1\f$,
+and each point of the partition is defined by the lines through it (two lines: their
+intersection; more lines, after points were merged: the point closest to them in the least-
+squares sense). Edges are pieces of lines between two points, so collinear edges share one
+line by construction. Cells are the bounded faces of the planar graph made by the edges.
+
+Coordinates are stored in a normalized frame: the input is translated so that the center
+of its smallest enclosing rectangle is the origin and scaled so that the rectangle's
+half-diagonal is 1 (this makes the thresholds of the simplification scale-free, as in the
+thesis). `point()` and `segment()` return input coordinates.
+
+Partitions are built by `kinetic_partition_2()`, `line_partition_from_arrangement_2()` and
+`line_partition_from_polygons_2()`, and simplified by `simplify_polygon_partition_2()`.
+
+\tparam GeomTraits a model of `Kernel` (for `Point_2`, `Segment_2`, `Polygon_2`)
+*/
+template <class GeomTraits>
+class Line_partition_2
+{
+public:
+  /// \name Types
+  /// @{
+  using Geom_traits = GeomTraits;                                   ///< the kernel
+  using FT = typename Geom_traits::FT;                              ///< number type
+  using Point_2 = typename Geom_traits::Point_2;                    ///< point type
+  using Segment_2 = typename Geom_traits::Segment_2;                ///< segment type
+  using Polygon_2 = CGAL::Polygon_2<Geom_traits>;                   ///< polygon type
+  using Polygon_with_holes_2 = CGAL::Polygon_with_holes_2<Geom_traits>; ///< cell type
+  /// the arrangement built (exactly) from the current edges, by `exact_arrangement()`
+  using Exact_arrangement_2 =
+    CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<CGAL::Exact_predicates_exact_constructions_kernel>>;
+
+  /// Similarity between input coordinates and the normalized frame:
+  /// normalized = (input - center) / scale.
+  struct Frame
+  {
+    double center_x = 0; ///< x of the origin of the normalized frame
+    double center_y = 0; ///< y of the origin of the normalized frame
+    double scale = 1;    ///< input length of a unit of the normalized frame
+  };
+
+  /// A line of the partition.
+  struct Line
+  {
+    std::array<double, 3> coefficients{{1, 0, 0}}; ///< (a, b, c), a^2 + b^2 = 1, normalized frame
+    Line_metric metric;                             ///< fidelity metric (normalized frame)
+    std::size_t number_of_segments = 0;            ///< segments accumulated in `metric`
+    bool is_fixed = false; ///< a side of the bounding rectangle of a kinetic partition: never moved nor merged
+  };
+
+  /// A point of the partition: the sorted indices of its lines (at least two).
+  struct Vertex
+  {
+    std::vector<std::size_t> lines; ///< sorted line indices
+  };
+
+  /// An edge: a piece of a line between two points that both lie on that line.
+  struct Edge
+  {
+    std::size_t line;   ///< supporting line
+    std::size_t source; ///< first point
+    std::size_t target; ///< second point
+  };
+  /// @}
+
+  /// \name Creation
+  /// @{
+  /// an empty partition
+  Line_partition_2() = default;
+
+  /// a partition from its parts (no check: call `is_valid()`)
+  Line_partition_2(const Frame& frame, std::vector<Line> lines, std::vector<Vertex> vertices,
+                   std::vector<Edge> edges)
+    : frame_(frame), lines_(std::move(lines)), vertices_(std::move(vertices)),
+      edges_(std::move(edges))
+  {}
+  /// @}
+
+  /// \name Access
+  /// @{
+  /// the similarity to the normalized frame
+  const Frame& frame() const { return frame_; }
+  /// the lines
+  const std::vector<Line>& lines() const { return lines_; }
+  /// the points
+  const std::vector<Vertex>& vertices() const { return vertices_; }
+  /// the edges
+  const std::vector<Edge>& edges() const { return edges_; }
+  /// number of lines
+  std::size_t number_of_lines() const { return lines_.size(); }
+  /// number of points
+  std::size_t number_of_vertices() const { return vertices_.size(); }
+  /// number of edges
+  std::size_t number_of_edges() const { return edges_.size(); }
+
+  /// coordinates of point `v` in the normalized frame
+  std::array<double, 2> normalized_point(std::size_t v) const
+  {
+    return internal::point_of_lines(vertices_[v].lines,
+                                    [this](std::size_t l) -> const internal::Vector_3d& {
+                                      return lines_[l].coefficients;
+                                    });
+  }
+
+  /// coordinates of point `v` (input frame)
+  Point_2 point(std::size_t v) const
+  {
+    const std::array<double, 2> p = normalized_point(v);
+    return Point_2(frame_.center_x + frame_.scale * p[0], frame_.center_y + frame_.scale * p[1]);
+  }
+
+  /// edge `e` as a segment (input frame)
+  Segment_2 segment(std::size_t e) const
+  {
+    return Segment_2(point(edges_[e].source), point(edges_[e].target));
+  }
+
+  /// number of pairs of lines meeting at a point whose angle differs from 90 degrees by less
+  /// than `tolerance_in_degrees` ("Orthos" of Fig. 3.8 of the thesis, with 1e-4 degree)
+  std::size_t number_of_orthogonal_pairs(double tolerance_in_degrees = 1e-4) const
+  {
+    const double bound = std::sin(tolerance_in_degrees * 3.14159265358979323846 / 180.);
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for(const Vertex& v : vertices_)
+      for(std::size_t i = 0; i < v.lines.size(); ++i)
+        for(std::size_t j = i + 1; j < v.lines.size(); ++j) {
+          const auto& a = lines_[v.lines[i]].coefficients;
+          const auto& b = lines_[v.lines[j]].coefficients;
+          if(std::abs(a[0] * b[0] + a[1] * b[1]) < bound)
+            pairs.emplace_back(v.lines[i], v.lines[j]);
+        }
+    std::sort(pairs.begin(), pairs.end());
+    return std::size_t(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
+  }
+  /// @}
+
+  /// \name Validity and cells
+  /// @{
+  /*!
+  builds the arrangement of the edges, with exact predicates and constructions on the
+  floating-point coordinates of the points (normalized frame)
+  */
+  Exact_arrangement_2 exact_arrangement() const
+  {
+    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+    std::vector<typename EK::Point_2> points;
+    points.reserve(vertices_.size());
+    for(std::size_t v = 0; v < vertices_.size(); ++v) {
+      const std::array<double, 2> p = normalized_point(v);
+      points.emplace_back(p[0], p[1]);
+    }
+    std::vector<typename EK::Segment_2> segments;
+    segments.reserve(edges_.size());
+    for(const Edge& e : edges_) segments.emplace_back(points[e.source], points[e.target]);
+    Exact_arrangement_2 arrangement;
+    CGAL::insert(arrangement, segments.begin(), segments.end());
+    return arrangement;
+  }
+
+  /*!
+  returns an empty string when the partition is valid, otherwise what is wrong with it.
+  Valid means: every point has at least two lines and finite, distinct coordinates; every
+  edge joins two distinct points of its line; the edges meet only at common endpoints (no
+  crossing, overlap, or point inside an edge), which is checked with exact predicates on
+  the computed coordinates; every edge separates two different cells; the boundary of
+  every cell is made of simple polygons.
+  */
+  std::string defect() const
+  {
+    for(std::size_t v = 0; v < vertices_.size(); ++v) {
+      const auto& l = vertices_[v].lines;
+      if(l.size() < 2) return "point " + std::to_string(v) + " has fewer than two lines";
+      for(std::size_t i = 0; i < l.size(); ++i)
+        if(l[i] >= lines_.size() || (i > 0 && l[i - 1] >= l[i]))
+          return "point " + std::to_string(v) + " has invalid line indices";
+      const std::array<double, 2> p = normalized_point(v);
+      if(!std::isfinite(p[0]) || !std::isfinite(p[1]))
+        return "point " + std::to_string(v) + " is at infinity";
+    }
+    std::vector<std::pair<std::array<double, 2>, std::size_t>> sorted;
+    for(std::size_t v = 0; v < vertices_.size(); ++v) sorted.emplace_back(normalized_point(v), v);
+    std::sort(sorted.begin(), sorted.end());
+    for(std::size_t i = 1; i < sorted.size(); ++i)
+      if(sorted[i].first == sorted[i - 1].first)
+        return "points " + std::to_string(sorted[i - 1].second) + " and " +
+               std::to_string(sorted[i].second) + " coincide";
+    std::vector<bool> used(vertices_.size(), false);
+    for(std::size_t e = 0; e < edges_.size(); ++e) {
+      const Edge& edge = edges_[e];
+      if(edge.source == edge.target || edge.source >= vertices_.size() ||
+         edge.target >= vertices_.size())
+        return "edge " + std::to_string(e) + " does not join two points";
+      for(std::size_t v : {edge.source, edge.target}) {
+        const auto& l = vertices_[v].lines;
+        if(!std::binary_search(l.begin(), l.end(), edge.line))
+          return "edge " + std::to_string(e) + " ends at a point off its line";
+        used[v] = true;
+      }
+    }
+    const std::string crossing = crossing_edges();
+    if(!crossing.empty()) return crossing;
+    const std::size_t used_vertices = std::size_t(std::count(used.begin(), used.end(), true));
+    const Exact_arrangement_2 arrangement = exact_arrangement();
+    if(arrangement.number_of_edges() != edges_.size() ||
+       arrangement.number_of_vertices() != used_vertices)
+      return "edges cross, overlap or pass through a point";
+    for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
+      if(h->face() == h->twin()->face()) return "an edge dangles or bridges inside a cell";
+    for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
+      std::vector<typename Exact_arrangement_2::Halfedge_const_handle> ccbs;
+      if(!f->is_unbounded()) ccbs.push_back(f->outer_ccb());
+      for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
+      for(auto start : ccbs) {
+        std::vector<const void*> seen;
+        auto h = start;
+        do { seen.push_back(&*h->target()); h = h->next(); } while(h != start);
+        std::sort(seen.begin(), seen.end());
+        if(std::adjacent_find(seen.begin(), seen.end()) != seen.end())
+          return "a cell boundary is not a simple polygon";
+      }
+    }
+    return std::string();
+  }
+
+  /// `defect().empty()`
+  bool is_valid() const { return defect().empty(); }
+
+  /// the edges involved in a defect: those that cross, overlap or pass through a point; all
+  /// edges if the partition has another defect; none if it is valid
+  std::vector<std::size_t> defective_edges() const
+  {
+    std::vector<std::size_t> result;
+    for(const auto& [e, f] : crossing_pairs(true)) { result.push_back(e); result.push_back(f); }
+    if(result.empty() && !is_valid())
+      for(std::size_t e = 0; e < edges_.size(); ++e) result.push_back(e);
+    std::sort(result.begin(), result.end());
+    result.erase(std::unique(result.begin(), result.end()), result.end());
+    return result;
+  }
+
+  /// writes the cells (bounded faces) as polygons with holes in input coordinates; returns
+  /// the output iterator. Requires `is_valid()`.
+  template <class OutputIterator>
+  OutputIterator cells(OutputIterator out) const
+  {
+    const Exact_arrangement_2 arrangement = exact_arrangement();
+    auto ccb_polygon = [this](typename Exact_arrangement_2::Ccb_halfedge_const_circulator start) {
+      Polygon_2 polygon;
+      auto h = start;
+      do {
+        const auto& p = h->target()->point();
+        polygon.push_back(Point_2(frame_.center_x + frame_.scale * CGAL::to_double(p.x()),
+                                  frame_.center_y + frame_.scale * CGAL::to_double(p.y())));
+      } while(++h != start);
+      if(polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
+      return polygon;
+    };
+    for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
+      if(f->is_unbounded()) continue;
+      Polygon_with_holes_2 cell(ccb_polygon(f->outer_ccb()));
+      for(auto h = f->holes_begin(); h != f->holes_end(); ++h) {
+        Polygon_2 hole = ccb_polygon(*h);
+        hole.reverse_orientation();
+        cell.add_hole(hole);
+      }
+      *out++ = cell;
+    }
+    return out;
+  }
+
+  /// number of cells (bounded faces of the planar graph)
+  std::size_t number_of_cells() const
+  {
+    const Exact_arrangement_2 arrangement = exact_arrangement();
+    return arrangement.number_of_faces() - arrangement.number_of_unbounded_faces();
+  }
+  /// @}
+
+private:
+  // Pairs of edges that meet elsewhere than at a common endpoint (boxes of the edges
+  // intersected with CGAL::box_intersection_d, then exact predicates); stops at the first
+  // pair unless `all`.
+  std::vector<std::pair<std::size_t, std::size_t>> crossing_pairs(bool all) const
+  {
+    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+    std::vector<typename EK::Point_2> points;
+    for(std::size_t v = 0; v < vertices_.size(); ++v) {
+      const std::array<double, 2> p = normalized_point(v);
+      points.emplace_back(p[0], p[1]);
+    }
+    std::vector<Box> boxes;
+    for(std::size_t e = 0; e < edges_.size(); ++e)
+      boxes.emplace_back(points[edges_[e].source].bbox() + points[edges_[e].target].bbox(), e);
+    std::vector<std::pair<std::size_t, std::size_t>> result;
+    auto test = [&](const Box& x, const Box& y) {
+      if(!all && !result.empty()) return;
+      const Edge& e = edges_[x.info()];
+      const Edge& f = edges_[y.info()];
+      const typename EK::Segment_2 se(points[e.source], points[e.target]), sf(points[f.source], points[f.target]);
+      std::size_t common = 0, shared = 0;
+      for(std::size_t a : {e.source, e.target})
+        for(std::size_t b : {f.source, f.target})
+          if(a == b) { ++common; shared = a; }
+      bool bad;
+      if(common == 0) bad = CGAL::do_intersect(se, sf);
+      else if(common == 2) bad = true;
+      else { // they share an endpoint: they must not overlap
+        const std::size_t oe = e.source == shared ? e.target : e.source;
+        const std::size_t of = f.source == shared ? f.target : f.source;
+        bad = se.has_on(points[of]) || sf.has_on(points[oe]);
+      }
+      if(bad) result.emplace_back(x.info(), y.info());
+    };
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test);
+    return result;
+  }
+
+  std::string crossing_edges() const
+  {
+    const auto pairs = crossing_pairs(false);
+    if(pairs.empty()) return std::string();
+    return "edges " + std::to_string(pairs[0].first) + " and " + std::to_string(pairs[0].second) +
+           " cross, overlap or pass through a point";
+  }
+
+  Frame frame_;
+  std::vector<Line> lines_;
+  std::vector<Vertex> vertices_;
+  std::vector<Edge> edges_;
+};
+
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_2_H

@@ -1,0 +1,74 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_ENCLOSING_RECTANGLE_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_ENCLOSING_RECTANGLE_2_H
+
+// The smallest-area enclosing rectangle of a point set (CGAL::min_rectangle_2 on its convex
+// hull). It moves with the points under rigid motions and scalings, so the normalized frame
+// and the bounding box of a kinetic partition do too.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/convex_hull_2.h>
+#include <CGAL/min_quadrilateral_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+struct Enclosing_rectangle_2
+{
+  std::array<double, 2> center{{0, 0}};
+  std::array<double, 2> axis{{1, 0}};          // unit direction of the first side
+  std::array<double, 2> half_extent{{0, 0}};   // along axis, along its normal
+  double half_diagonal() const { return std::hypot(half_extent[0], half_extent[1]); }
+
+  // the four corners, counterclockwise, after moving every side outward by `margin`
+  std::array<std::array<double, 2>, 4> corners(double margin) const
+  {
+    const double u0 = axis[0], u1 = axis[1];
+    const double hu = half_extent[0] + margin, hv = half_extent[1] + margin;
+    std::array<std::array<double, 2>, 4> result;
+    const double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
+    for(int i = 0; i < 4; ++i)
+      result[i] = {center[0] + su[i] * hu * u0 - sv[i] * hv * u1,
+                   center[1] + su[i] * hu * u1 + sv[i] * hv * u0};
+    return result;
+  }
+};
+
+inline Enclosing_rectangle_2 enclosing_rectangle(const std::vector<std::array<double, 2>>& points)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<K::Point_2> p, hull;
+  p.reserve(points.size());
+  for(const auto& q : points) p.emplace_back(q[0], q[1]);
+  CGAL::convex_hull_2(p.begin(), p.end(), std::back_inserter(hull));
+  Enclosing_rectangle_2 r;
+  if(hull.size() < 3) { // collinear points: the rectangle of their segment, flat
+    const auto [lo, hi] = std::minmax_element(p.begin(), p.end());
+    const double dx = hi->x() - lo->x(), dy = hi->y() - lo->y(), n = std::hypot(dx, dy);
+    r.center = {(lo->x() + hi->x()) / 2, (lo->y() + hi->y()) / 2};
+    if(n > 0) r.axis = {dx / n, dy / n};
+    r.half_extent = {n / 2, 0};
+    return r;
+  }
+  std::vector<K::Point_2> c;
+  CGAL::min_rectangle_2(hull.begin(), hull.end(), std::back_inserter(c));
+  const double dx = c[1].x() - c[0].x(), dy = c[1].y() - c[0].y(), n = std::hypot(dx, dy);
+  r.axis = {dx / n, dy / n};
+  r.center = {(c[0].x() + c[2].x()) / 2, (c[0].y() + c[2].y()) / 2};
+  r.half_extent = {n / 2, std::hypot(c[2].x() - c[1].x(), c[2].y() - c[1].y()) / 2};
+  return r;
+}
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_ENCLOSING_RECTANGLE_2_H

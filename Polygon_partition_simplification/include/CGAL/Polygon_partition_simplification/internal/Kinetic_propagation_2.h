@@ -1,0 +1,325 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_KINETIC_PROPAGATION_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_KINETIC_PROPAGATION_2_H
+
+// The kinetic framework of section 3.2.2: every segment grows from both ends at unit speed,
+// so a point I of its supporting line is reached at time T_S(I) = d(I, S). A growing end
+// (a "ray") that reaches the current extent of another segment stops there if it arrives
+// last (the other segment covers I strictly earlier; equal times: the ray with the larger
+// index stops); it crosses instead while it has crossings left, or when its next
+// intersection is closer than the crossing distance. Rays stop at the bounding rectangle.
+//
+// Exactness: intersection points and arrival times are exact (lazy exact kernel); events are
+// processed in exact time order (candidates are found in double precision, and candidates
+// of a ray whose double parameters are close are ordered exactly). The result is the final
+// extent of every segment.
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+class Kinetic_propagation_2
+{
+public:
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  using FT = EK::FT;
+  using Point = EK::Point_2;
+
+  struct Statistics
+  {
+    std::size_t events = 0;     // candidate intersections examined
+    std::size_t crossings = 0;  // times a ray crossed a segment that would have stopped it
+    std::size_t refills = 0;    // candidate scans
+  };
+
+  // `segments`: exact, non-degenerate, pairwise distinct; `box`: the 4 corners of a convex
+  // rectangle, counterclockwise, containing every segment strictly inside.
+  Kinetic_propagation_2(const std::vector<EK::Segment_2>& segments, const std::array<Point, 4>& box,
+                        std::size_t maximum_crossings, double crossing_distance)
+    : segments_(segments), maximum_crossings_(maximum_crossings),
+      crossing_distance_(crossing_distance)
+  {
+    const std::size_t n = segments.size();
+    lines_.reserve(n);
+    double_lines_.reserve(n);
+    for(const auto& s : segments) {
+      lines_.emplace_back(s.source(), s.target());
+      const double px = CGAL::to_double(s.source().x()), py = CGAL::to_double(s.source().y());
+      const double qx = CGAL::to_double(s.target().x()), qy = CGAL::to_double(s.target().y());
+      double_lines_.push_back({py - qy, qx - px, px * qy - py * qx});
+    }
+    for(int k = 0; k < 4; ++k) box_[k] = EK::Line_2(box[k], box[(k + 1) % 4]);
+    rays_.resize(2 * n);
+    for(std::size_t r = 0; r < rays_.size(); ++r) {
+      Ray& ray = rays_[r];
+      const auto& s = segments[r / 2];
+      ray.origin = (r % 2 == 1) ? s.target() : s.source();
+      ray.direction = (r % 2 == 1) ? s.target() - s.source() : s.source() - s.target();
+      ray.direction_length =
+        std::sqrt(CGAL::to_double(ray.direction.squared_length()));
+      // exit parameter through the rectangle: the smallest positive one over its sides
+      bool found = false;
+      for(const auto& side : box_) {
+        const FT den = side.a() * ray.direction.x() + side.b() * ray.direction.y();
+        // the inside is on the left of a counterclockwise side: leaving it means den < 0
+        if(CGAL::sign(den) != CGAL::NEGATIVE) continue;
+        const FT t = -(side.a() * ray.origin.x() + side.b() * ray.origin.y() + side.c()) / den;
+        if(!found || t < ray.box_parameter) { ray.box_parameter = t; found = true; }
+      }
+      CGAL_assertion(found);
+      ray.box_parameter_double = CGAL::to_double(ray.box_parameter);
+    }
+  }
+
+  void run()
+  {
+    for(std::size_t r = 0; r < rays_.size(); ++r) {
+      refill(r);
+      push_next(r);
+    }
+    while(!queue_.empty()) {
+      const Queued q = queue_.top();
+      queue_.pop();
+      process(q.ray);
+    }
+  }
+
+  // final extent of segment i
+  EK::Segment_2 extent(std::size_t i) const
+  {
+    return EK::Segment_2(rays_[2 * i].stop, rays_[2 * i + 1].stop);
+  }
+
+  const Statistics& statistics() const { return statistics_; }
+
+private:
+  static constexpr std::uint32_t box_candidate = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::size_t batch_size = 16;
+
+  struct Candidate
+  {
+    double parameter;     // along the ray direction, in units of its length
+    std::uint32_t segment; // or box_candidate
+    bool operator<(const Candidate& o) const
+    {
+      return parameter < o.parameter || (parameter == o.parameter && segment < o.segment);
+    }
+  };
+
+  struct Ray
+  {
+    Point origin;
+    EK::Vector_2 direction;
+    double direction_length = 0;
+    FT box_parameter;
+    double box_parameter_double = 0;
+    std::vector<Candidate> candidates; // current batch, sorted, from `cursor` on
+    std::size_t cursor = 0;
+    Candidate last{-1., 0};           // last candidate taken (double order)
+    bool box_listed = false;
+    // exact data of the current head candidate
+    FT head_parameter;
+    bool stopped = false;
+    Point stop;
+    FT stop_parameter; // stop = origin + stop_parameter * direction
+    std::size_t crossings = 0;
+  };
+
+  struct Queued
+  {
+    FT time2; // squared arrival time at the head candidate
+    std::uint32_t ray;
+  };
+  struct Later
+  {
+    bool operator()(const Queued& x, const Queued& y) const
+    {
+      const CGAL::Comparison_result c = CGAL::compare(x.time2, y.time2);
+      if(c != CGAL::EQUAL) return c == CGAL::LARGER;
+      return x.ray > y.ray;
+    }
+  };
+
+  FT exact_parameter(const Ray& ray, std::uint32_t segment) const
+  {
+    if(segment == box_candidate) return ray.box_parameter;
+    const EK::Line_2& l = lines_[segment];
+    const FT den = l.a() * ray.direction.x() + l.b() * ray.direction.y();
+    return -(l.a() * ray.origin.x() + l.b() * ray.origin.y() + l.c()) / den;
+  }
+
+  // scans all segments for the next batch of candidates beyond `last`
+  void refill(std::size_t r)
+  {
+    ++statistics_.refills;
+    Ray& ray = rays_[r];
+    const std::size_t own = r / 2;
+    const double ox = CGAL::to_double(ray.origin.x()), oy = CGAL::to_double(ray.origin.y());
+    const double vx = CGAL::to_double(ray.direction.x()), vy = CGAL::to_double(ray.direction.y());
+    const double limit = ray.box_parameter_double * (1 + 1e-9) + 1e-12;
+    std::vector<Candidate> found;
+    for(std::size_t j = 0; j < double_lines_.size(); ++j) {
+      if(j == own) continue;
+      const auto& l = double_lines_[j];
+      const double den = l[0] * vx + l[1] * vy;
+      if(den == 0) continue;
+      const double t = -(l[0] * ox + l[1] * oy + l[2]) / den;
+      if(!(t > -1e-9) || t > limit) continue;
+      const Candidate c{t, std::uint32_t(j)};
+      if(ray.last < c) found.push_back(c);
+    }
+    if(!ray.box_listed) found.push_back({ray.box_parameter_double, box_candidate});
+    if(found.size() > batch_size) {
+      std::nth_element(found.begin(), found.begin() + batch_size - 1, found.end());
+      // keep every candidate close to the last one kept, so that a cluster of nearly equal
+      // parameters is never split between two batches
+      const double cut = found[batch_size - 1].parameter;
+      const double tolerance = 1e-9 * std::max(1., std::abs(cut));
+      auto end = std::partition(found.begin() + batch_size, found.end(),
+                                [&](const Candidate& c) { return c.parameter <= cut + tolerance; });
+      found.erase(end, found.end());
+    }
+    std::sort(found.begin(), found.end());
+    for(const Candidate& c : found)
+      if(c.segment == box_candidate) ray.box_listed = true;
+    ray.candidates = std::move(found);
+    ray.cursor = 0;
+  }
+
+  // Puts the exact minimum of the current cluster at the cursor and queues the ray.
+  // Candidates on a line parallel to the ray (exactly) are skipped.
+  void push_next(std::size_t r)
+  {
+    Ray& ray = rays_[r];
+    for(;;) {
+      if(ray.cursor == ray.candidates.size()) {
+        if(ray.box_listed && ray.candidates.empty()) return; // cannot happen: the box stops it
+        refill(r);
+        if(ray.candidates.empty()) return;
+      }
+      auto& c = ray.candidates;
+      const double tolerance = 1e-9 * std::max(1., std::abs(c[ray.cursor].parameter));
+      std::size_t end = ray.cursor + 1;
+      while(end < c.size() && c[end].parameter <= c[ray.cursor].parameter + tolerance) ++end;
+      // exact selection of the smallest parameter in [cursor, end)
+      std::size_t best = c.size();
+      FT best_parameter;
+      for(std::size_t k = ray.cursor; k < end; ++k) {
+        if(c[k].segment != box_candidate && is_parallel(ray, c[k].segment)) continue;
+        const FT t = exact_parameter(ray, c[k].segment);
+        if(best == c.size()) { best = k; best_parameter = t; continue; }
+        const CGAL::Comparison_result cmp = CGAL::compare(t, best_parameter);
+        if(cmp == CGAL::SMALLER ||
+           (cmp == CGAL::EQUAL && c[k].segment < c[best].segment)) { best = k; best_parameter = t; }
+      }
+      if(best == c.size()) { // only parallel lines in the cluster
+        ray.last = c[end - 1];
+        ray.cursor = end;
+        continue;
+      }
+      std::swap(c[ray.cursor], c[best]);
+      if(CGAL::sign(best_parameter) == CGAL::NEGATIVE) { // behind the origin: skip
+        ray.last = std::max(ray.last, c[ray.cursor]);
+        ++ray.cursor;
+        continue;
+      }
+      ray.head_parameter = best_parameter;
+      queue_.push({best_parameter * best_parameter * ray.direction.squared_length(),
+                   std::uint32_t(r)});
+      return;
+    }
+  }
+
+  bool is_parallel(const Ray& ray, std::uint32_t segment) const
+  {
+    const EK::Line_2& l = lines_[segment];
+    return CGAL::is_zero(l.a() * ray.direction.x() + l.b() * ray.direction.y());
+  }
+
+  // does segment j cover point I (exact) at the time ray r reaches it (squared time t2)?
+  bool covers(std::size_t j, const Point& I, const FT& t2, std::size_t r) const
+  {
+    const auto& s = segments_[j];
+    const EK::Vector_2 d = s.target() - s.source();
+    const bool before_source = CGAL::sign((I - s.source()) * d) == CGAL::NEGATIVE;
+    const bool after_target = CGAL::sign((I - s.target()) * d) == CGAL::POSITIVE;
+    if(!before_source && !after_target) return true; // on the initial segment
+    const std::size_t rj = 2 * j + (after_target ? 1 : 0);
+    const Ray& other = rays_[rj];
+    const FT tj2 = CGAL::squared_distance(I, other.origin);
+    if(other.stopped &&
+       CGAL::compare(other.stop_parameter * other.stop_parameter * other.direction.squared_length(),
+                     tj2) == CGAL::SMALLER)
+      return false; // stopped before reaching I
+    const CGAL::Comparison_result c = CGAL::compare(tj2, t2);
+    if(c != CGAL::EQUAL) return c == CGAL::SMALLER;
+    return rj < r; // simultaneous arrival: the smaller ray index goes on
+  }
+
+  void process(std::size_t r)
+  {
+    Ray& ray = rays_[r];
+    const Candidate head = ray.candidates[ray.cursor];
+    ray.last = std::max(ray.last, head);
+    ++ray.cursor;
+    ++statistics_.events;
+    const Point I = ray.origin + ray.head_parameter * ray.direction;
+    bool stop = head.segment == box_candidate;
+    if(!stop) {
+      const FT t2 = ray.head_parameter * ray.head_parameter * ray.direction.squared_length();
+      if(covers(head.segment, I, t2, r)) {
+        stop = true;
+        if(ray.crossings < maximum_crossings_) { stop = false; ++ray.crossings; }
+        else if(crossing_distance_ > 0 && next_is_close(ray, head.parameter)) stop = false;
+        if(!stop) ++statistics_.crossings;
+      }
+    }
+    if(stop) {
+      ray.stopped = true;
+      ray.stop = I;
+      ray.stop_parameter = ray.head_parameter;
+      ray.candidates.clear();
+      ray.candidates.shrink_to_fit();
+      return;
+    }
+    push_next(r);
+  }
+
+  // is the next intersection along the ray (a line or the box) closer than the crossing distance?
+  bool next_is_close(Ray& ray, double parameter)
+  {
+    std::size_t r = std::size_t(&ray - rays_.data());
+    if(ray.cursor == ray.candidates.size()) refill(r);
+    if(ray.cursor == ray.candidates.size()) return false;
+    return (ray.candidates[ray.cursor].parameter - parameter) * ray.direction_length <
+           crossing_distance_;
+  }
+
+  const std::vector<EK::Segment_2>& segments_;
+  std::vector<EK::Line_2> lines_;
+  std::vector<std::array<double, 3>> double_lines_;
+  std::array<EK::Line_2, 4> box_;
+  std::vector<Ray> rays_;
+  std::priority_queue<Queued, std::vector<Queued>, Later> queue_;
+  std::size_t maximum_crossings_;
+  double crossing_distance_;
+  Statistics statistics_;
+};
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_KINETIC_PROPAGATION_2_H

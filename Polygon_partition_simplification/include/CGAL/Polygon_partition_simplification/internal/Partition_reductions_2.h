@@ -1,0 +1,488 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_PARTITION_REDUCTIONS_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_PARTITION_REDUCTIONS_2_H
+
+// The combinatorial reductions of section 3.3.5 on a partition in line representation.
+//
+// 0. An edge whose direction along its line reversed during the descent went through its
+//    collapse: if it is shorter than epsilon its two points merge (b1); otherwise one of its
+//    points went through infinity: see 2.
+// 1. For every triplet (i, j, k) of the concurrency term, with points P_ij = u and P_ik = v
+//    joined by an edge of line i, such that |det(L_i, L_j, L_k)| < eta, decide which exact
+//    situation it approximates: (a) two of the lines are closer than d_L: merge them; (b1) u
+//    and v are closer than d_P: merge the points (the edge collapses); (b2) neither: a point is
+//    outside the disk of radius R (Eq. 3.15 guarantees one of the three when
+//    eta = d_P d_L^2 / (5 (1 + R^2))), see 2.
+// 2. A point sent to infinity: if its two most parallel lines are closer than epsilon
+//    everywhere in the disk, the step between them is an edge shorter than epsilon that
+//    collapsed, and they merge (a); otherwise nothing is done here (counted in far_points):
+//    the exact validity check of the caller sees the partition invalid and redoes the round.
+// 3. Restore the invariant (two lines share at most one point, two points at most one line):
+//    two points sharing two lines merge their lines if these are closer than d_L, or merge if
+//    they are closer than epsilon; two distant points on the same two lines are a conflict,
+//    reported to the caller (which redoes the round with their lines kept still).
+// After merges the edges of every line are rebuilt from the union of the intervals they
+// covered (merged lines overlap), points left on a single line disappear inside their chain,
+// and dangling edges are removed. Merged lines get M_f = M_i + M_j and the line minimizing it.
+// Every merge removes a line or a point, so the restoration ends.
+
+#include <CGAL/Polygon_partition_simplification/internal/Line_energy_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+using Index = std::uint32_t;
+
+struct Working_partition
+{
+  std::vector<Line_state> lines;
+  std::vector<std::vector<Index>> vertex_lines; // sorted, distinct
+  std::vector<std::array<Index, 3>> edges;      // line, u < v
+
+  std::array<double, 2> point(Index v) const
+  {
+    return point_of_lines(vertex_lines[v], [this](std::size_t l) -> const Vector_3d& {
+      return lines[l].coefficients;
+    });
+  }
+};
+
+struct Reduction_counts
+{
+  std::size_t line_merges = 0;
+  std::size_t point_merges = 0;
+  std::size_t removed_points = 0;  // points left on one line, or dangling
+  std::size_t far_points = 0;      // case (b2) without a merge: left to the validity check
+  std::size_t total() const { return line_merges + point_merges + removed_points; }
+};
+
+struct Reduction_thresholds
+{
+  double eta = 0;           // on |det|
+  double point_distance = 0; // d_P
+  double line_distance = 0;  // d_L
+  double collapse_length = 0; // epsilon: a reversed edge shorter than this collapses
+};
+
+// The concurrency triplets and orthogonality pairs of the current structure.
+inline Energy_terms energy_terms(const Working_partition& w)
+{
+  Energy_terms terms;
+  for(const auto& e : w.edges) {
+    const Index i = e[0];
+    for(Index j : w.vertex_lines[e[1]]) {
+      if(j == i) continue;
+      for(Index k : w.vertex_lines[e[2]])
+        if(k != i && k != j) terms.triplets.push_back({i, j, k});
+    }
+  }
+  for(const auto& l : w.vertex_lines) {
+    for(std::size_t a = 0; a < l.size(); ++a)
+      for(std::size_t b = a + 1; b < l.size(); ++b) {
+        if(!w.lines[l[a]].is_fixed && !w.lines[l[b]].is_fixed) terms.pairs.push_back({l[a], l[b]});
+        for(std::size_t c = b + 1; c < l.size(); ++c) terms.triplets.push_back({l[a], l[b], l[c]});
+      }
+  }
+  return terms;
+}
+
+class Partition_reducer
+{
+public:
+  Partition_reducer(Working_partition& w, const Reduction_thresholds& t) : w_(w), t_(t) {}
+
+  // Orientation of every edge along its line (+1 or -1), to find the edges that reverse.
+  static std::vector<signed char> edge_orientations(const Working_partition& w)
+  {
+    std::vector<signed char> result(w.edges.size());
+    for(std::size_t e = 0; e < w.edges.size(); ++e) {
+      const Vector_3d& L = w.lines[w.edges[e][0]].coefficients;
+      const auto p = w.point(w.edges[e][1]), q = w.point(w.edges[e][2]);
+      result[e] = (-L[1] * (q[0] - p[0]) + L[0] * (q[1] - p[1])) >= 0 ? 1 : -1;
+    }
+    return result;
+  }
+
+  // `orientations`: those of the edges before the descent. An edge whose orientation
+  // reversed went through a collapse during the descent: it is collapsed (b1).
+  Reduction_counts run(const std::vector<signed char>& orientations)
+  {
+    reset();
+    const std::size_t nv = w_.vertex_lines.size();
+    std::vector<std::array<double, 2>> points(nv);
+    for(Index v = 0; v < nv; ++v) points[v] = w_.point(v);
+    auto line = [&](Index l) -> const Vector_3d& { return w_.lines[l].coefficients; };
+    auto try_line_merge = [&](Index x, Index y) {
+      if(w_.lines[x].is_still() || w_.lines[y].is_still()) return false;
+      if(line_distance(line(x), line(y)) >= t_.line_distance) return false;
+      return unite_lines(x, y);
+    };
+    {
+      // A reversed edge shorter than the collapse distance went through its collapse; a longer
+      // one has an end that went through infinity (its lines became parallel): that end is
+      // removed, as in (b2).
+      const std::vector<signed char> now = edge_orientations(w_);
+      for(std::size_t e = 0; e < w_.edges.size(); ++e) {
+        if(now[e] == orientations[e]) continue;
+        const Index u = w_.edges[e][1], v = w_.edges[e][2];
+        if(std::hypot(points[u][0] - points[v][0], points[u][1] - points[v][1]) < t_.collapse_length) {
+          if(unite_vertices(u, v)) ++counts_.point_merges;
+          continue;
+        }
+        send_to_infinity(smallest_angle(u) < smallest_angle(v) ? u : v);
+      }
+    }
+    // 1. triplets below eta
+    for(const auto& e : w_.edges) {
+      const Index i = e[0], u = e[1], v = e[2];
+      for(Index j : w_.vertex_lines[u]) {
+        if(j == i) continue;
+        for(Index k : w_.vertex_lines[v]) {
+          if(k == i || k == j) continue;
+          if(!(std::abs(determinant(line(i), line(j), line(k))) < t_.eta)) continue;
+          if(try_line_merge(j, k) || try_line_merge(i, j) || try_line_merge(i, k)) {
+            ++counts_.line_merges; continue;
+          }
+          if(std::hypot(points[u][0] - points[v][0], points[u][1] - points[v][1]) < t_.point_distance) {
+            if(unite_vertices(u, v)) ++counts_.point_merges;
+            continue;
+          }
+          // (b2): a point outside the disk of radius R = 1
+          for(Index x : {u, v})
+            if(points[x][0] * points[x][0] + points[x][1] * points[x][1] > 1.) send_to_infinity(x);
+        }
+      }
+    }
+    for(const auto& l : w_.vertex_lines) // lines through one point
+      for(std::size_t a = 0; a < l.size(); ++a)
+        for(std::size_t b = a + 1; b < l.size(); ++b)
+          for(std::size_t c = b + 1; c < l.size(); ++c)
+            if(std::abs(determinant(line(l[a]), line(l[b]), line(l[c]))) < t_.eta &&
+               (try_line_merge(l[a], l[b]) || try_line_merge(l[a], l[c]) || try_line_merge(l[b], l[c])))
+              ++counts_.line_merges;
+    apply();
+    // 2. invariant
+    for(;;) {
+      reset();
+      bool changed = false;
+      std::unordered_map<std::uint64_t, Index> owner;
+      for(Index v = 0; v < w_.vertex_lines.size(); ++v) {
+        const auto& l = w_.vertex_lines[v];
+        for(std::size_t a = 0; a < l.size(); ++a)
+          for(std::size_t b = a + 1; b < l.size(); ++b) {
+            const std::uint64_t key = (std::uint64_t(l[a]) << 32) | l[b];
+            auto [it, inserted] = owner.emplace(key, v);
+            if(inserted || find_vertex(it->second) == find_vertex(v)) continue;
+            if(try_line_merge(l[a], l[b])) { ++counts_.line_merges; changed = true; continue; }
+            const auto p = w_.point(it->second), q = w_.point(v);
+            if(std::hypot(p[0] - q[0], p[1] - q[1]) < t_.collapse_length) {
+              if(unite_vertices(it->second, v)) ++counts_.point_merges;
+              changed = true;
+              continue;
+            }
+            // two distant points on the same two lines: no merge makes sense; the caller redoes
+            // the round with these lines kept still
+            for(Index y : {it->second, v})
+              for(Index x : w_.vertex_lines[y])
+                conflicts_.insert(conflicts_.end(), w_.lines[x].members.begin(), w_.lines[x].members.end());
+          }
+      }
+      if(!changed) break;
+      apply();
+    }
+    return counts_;
+  }
+
+private:
+  // A point sent to infinity: its two most parallel lines. When they are closer than the
+  // collapse distance everywhere in the disk of radius R = 1, the step between them is an
+  // edge shorter than epsilon that went through its collapse: they merge (a). Otherwise
+  // the point is removed with its edges (b2).
+  void send_to_infinity(Index x)
+  {
+    const auto& l = w_.vertex_lines[x];
+    double best = 2;
+    Index p = 0, q = 0;
+    for(std::size_t a = 0; a < l.size(); ++a)
+      for(std::size_t b = a + 1; b < l.size(); ++b) {
+        const Vector_3d& L = w_.lines[l[a]].coefficients;
+        const Vector_3d& M = w_.lines[l[b]].coefficients;
+        const double s = std::abs(L[0] * M[1] - L[1] * M[0]);
+        if(s < best) { best = s; p = l[a]; q = l[b]; }
+      }
+    if(best < 1 && !w_.lines[p].is_still() && !w_.lines[q].is_still()) {
+      const Vector_3d& L = w_.lines[p].coefficients;
+      Vector_3d M = w_.lines[q].coefficients;
+      if(L[0] * M[0] + L[1] * M[1] < 0) M = {-M[0], -M[1], -M[2]};
+      const double spread = std::hypot(L[0] - M[0], L[1] - M[1]) + std::abs(L[2] - M[2]);
+      if(spread < t_.collapse_length) {
+        if(unite_lines(p, q)) ++counts_.line_merges;
+        return;
+      }
+    }
+    ++counts_.far_points; // left as is: the validity check of the caller decides
+  }
+
+  // |sin| of the smallest angle between two lines of point v
+  double smallest_angle(Index v) const
+  {
+    double result = 1;
+    const auto& l = w_.vertex_lines[v];
+    for(std::size_t a = 0; a < l.size(); ++a)
+      for(std::size_t b = a + 1; b < l.size(); ++b) {
+        const Vector_3d& p = w_.lines[l[a]].coefficients;
+        const Vector_3d& q = w_.lines[l[b]].coefficients;
+        result = std::min(result, std::abs(p[0] * q[1] - p[1] * q[0]));
+      }
+    return result;
+  }
+
+  Index find_line(Index x) { while(line_parent_[x] != x) x = line_parent_[x] = line_parent_[line_parent_[x]]; return x; }
+  Index find_vertex(Index x) { while(vertex_parent_[x] != x) x = vertex_parent_[x] = vertex_parent_[vertex_parent_[x]]; return x; }
+
+  bool unite_lines(Index x, Index y)
+  {
+    x = find_line(x); y = find_line(y);
+    if(x == y) return false;
+    if(y < x) std::swap(x, y);
+    line_parent_[y] = x;
+    return true;
+  }
+  bool unite_vertices(Index x, Index y)
+  {
+    x = find_vertex(x); y = find_vertex(y);
+    if(x == y) return false;
+    if(y < x) std::swap(x, y);
+    vertex_parent_[y] = x;
+    return true;
+  }
+
+  void reset()
+  {
+    line_parent_.resize(w_.lines.size());
+    std::iota(line_parent_.begin(), line_parent_.end(), Index(0));
+    vertex_parent_.resize(w_.vertex_lines.size());
+    std::iota(vertex_parent_.begin(), vertex_parent_.end(), Index(0));
+  }
+
+  // argmin of L^T M L over a^2 + b^2 = 1: with c = -(M_ac a + M_bc b) / M_cc, the smallest
+  // eigenvector of the Schur complement of M_cc in M
+  static Vector_3d best_line(const Line_metric& m)
+  {
+    const double mcc = m(2, 2);
+    const double s00 = m(0, 0) - m(0, 2) * m(0, 2) / mcc, s01 = m(0, 1) - m(0, 2) * m(1, 2) / mcc,
+                 s11 = m(1, 1) - m(1, 2) * m(1, 2) / mcc;
+    const double half_trace = 0.5 * (s00 + s11), det = s00 * s11 - s01 * s01;
+    const double smallest = half_trace - std::sqrt(std::max(0., half_trace * half_trace - det));
+    double a = s01, b = smallest - s00; // (S - smallest I) (a, b) = 0
+    if(std::abs(a) + std::abs(b) < 1e-300 * (1 + std::abs(half_trace))) { a = smallest - s11; b = s01; }
+    const double n = std::hypot(a, b);
+    if(!(n > 0)) return {std::nan(""), 0, 0};
+    a /= n; b /= n;
+    return {a, b, -(m(0, 2) * a + m(1, 2) * b) / mcc};
+  }
+
+  // Rebuilds the partition after merges: merged lines get the sum of their metrics and the
+  // line that minimizes it (the best fit to the endpoints of all their segments, as in QEM);
+  // a fixed line keeps its coefficients.
+  void apply()
+  {
+    const std::size_t nl = w_.lines.size(), nv = w_.vertex_lines.size();
+    std::vector<Index> new_line(nl, Index(-1));
+    std::vector<Line_state> lines;
+    std::vector<Vector_3d> sum;
+    for(Index l = 0; l < nl; ++l) {
+      const Index r = find_line(l);
+      if(new_line[r] == Index(-1)) {
+        new_line[r] = Index(lines.size());
+        lines.push_back(w_.lines[r]);
+        lines.back().metric = Line_metric();
+        lines.back().number_of_segments = 0;
+        lines.back().members.clear();
+        sum.push_back({0, 0, 0});
+      }
+      new_line[l] = new_line[r];
+      Line_state& target = lines[new_line[l]];
+      const Line_state& source = w_.lines[l];
+      target.metric += source.metric;
+      target.number_of_segments += source.number_of_segments;
+      target.is_fixed = target.is_fixed || source.is_fixed;
+      target.is_frozen = target.is_frozen || source.is_frozen;
+      target.members.insert(target.members.end(), source.members.begin(), source.members.end());
+      const Vector_3d& reference = w_.lines[r].coefficients;
+      const double orientation =
+        reference[0] * source.coefficients[0] + reference[1] * source.coefficients[1] < 0 ? -1. : 1.;
+      const double weight = double(std::max<std::size_t>(source.number_of_segments, 1));
+      for(int c = 0; c < 3; ++c) sum[new_line[l]][c] += weight * orientation * source.coefficients[c];
+    }
+    for(Index l = 0; l < nl; ++l) {
+      Line_state& target = lines[new_line[l]];
+      if(w_.lines[l].is_fixed) target.coefficients = w_.lines[l].coefficients;
+    }
+    for(std::size_t l = 0; l < lines.size(); ++l) {
+      if(lines[l].is_fixed || lines[l].members.size() < 2) continue;
+      // the line minimizing L^T M_f L on the cylinder, oriented like the mean of the merged lines
+      Vector_3d best = best_line(lines[l].metric);
+      if(best[0] * sum[l][0] + best[1] * sum[l][1] < 0) best = {-best[0], -best[1], -best[2]};
+      lines[l].coefficients = std::isfinite(best[0]) ? best : normalized_line(sum[l]);
+    }
+
+    std::vector<Index> new_vertex(nv, Index(-1));
+    std::vector<std::vector<Index>> vertex_lines;
+    for(Index v = 0; v < nv; ++v) {
+      const Index r = find_vertex(v);
+      if(new_vertex[r] == Index(-1)) { new_vertex[r] = Index(vertex_lines.size()); vertex_lines.emplace_back(); }
+      new_vertex[v] = new_vertex[r];
+      for(Index l : w_.vertex_lines[v]) vertex_lines[new_vertex[v]].push_back(new_line[l]);
+    }
+    for(auto& l : vertex_lines) {
+      std::sort(l.begin(), l.end());
+      l.erase(std::unique(l.begin(), l.end()), l.end());
+    }
+    std::vector<std::array<Index, 3>> old_edges;
+    for(const auto& e : w_.edges) {
+      Index u = new_vertex[e[1]], v = new_vertex[e[2]];
+      if(u == v) continue;
+      old_edges.push_back({new_line[e[0]], u, v});
+    }
+    w_.lines = std::move(lines);
+    w_.vertex_lines = std::move(vertex_lines);
+    w_.edges = rechain(old_edges);
+    remove_dangling_edges();
+  }
+
+  // The edges of every line, rebuilt from the union of the intervals its old edges cover:
+  // inside each union, consecutive points of the line (points on at least two lines, in the
+  // order along the line) are joined. Overlapping edges of merged lines become one chain and
+  // a point left on a single line disappears inside its chain.
+  std::vector<std::array<Index, 3>> rechain(const std::vector<std::array<Index, 3>>& old_edges) const
+  {
+    const std::size_t nl = w_.lines.size(), nv = w_.vertex_lines.size();
+    std::vector<std::array<double, 2>> points(nv);
+    for(Index v = 0; v < nv; ++v)
+      points[v] = w_.vertex_lines[v].size() >= 2 ? w_.point(v) : std::array<double, 2>{0, 0};
+    auto parameter = [&](Index l, Index v) {
+      const Vector_3d& L = w_.lines[l].coefficients;
+      return -L[1] * points[v][0] + L[0] * points[v][1];
+    };
+    // a single-line point has no coordinates of its own: it is where its edges' other ends are
+    std::vector<std::vector<std::pair<Index, Index>>> line_edges(nl); // (u, v) per line
+    for(const auto& e : old_edges) line_edges[e[0]].push_back({e[1], e[2]});
+    std::vector<std::vector<Index>> line_points(nl);
+    for(Index v = 0; v < nv; ++v)
+      if(w_.vertex_lines[v].size() >= 2)
+        for(Index l : w_.vertex_lines[v]) line_points[l].push_back(v);
+    std::vector<std::array<Index, 3>> edges;
+    for(Index l = 0; l < nl; ++l) {
+      // intervals with real points at both ends (edges to single-line points are dropped first
+      // by extending through them: a single-line point joins the intervals of its edges)
+      std::vector<std::pair<double, double>> intervals;
+      std::vector<std::vector<Index>> through(nv);
+      for(const auto& [u, v] : line_edges[l]) {
+        const bool ru = w_.vertex_lines[u].size() >= 2, rv = w_.vertex_lines[v].size() >= 2;
+        if(ru && rv) {
+          const double a = parameter(l, u), b = parameter(l, v);
+          intervals.push_back({std::min(a, b), std::max(a, b)});
+        } else if(ru) through[v].push_back(u);
+        else if(rv) through[u].push_back(v);
+      }
+      for(Index x = 0; x < nv; ++x) // a single-line point between two real points
+        for(std::size_t i = 0; i < through[x].size(); ++i)
+          for(std::size_t j = i + 1; j < through[x].size(); ++j) {
+            const double a = parameter(l, through[x][i]), b = parameter(l, through[x][j]);
+            intervals.push_back({std::min(a, b), std::max(a, b)});
+          }
+      if(intervals.empty()) continue;
+      std::sort(intervals.begin(), intervals.end());
+      std::vector<std::pair<double, double>> unions{intervals[0]};
+      for(const auto& i : intervals) {
+        if(i.first <= unions.back().second) unions.back().second = std::max(unions.back().second, i.second);
+        else unions.push_back(i);
+      }
+      std::vector<std::pair<double, Index>> sorted;
+      for(Index v : line_points[l]) sorted.push_back({parameter(l, v), v});
+      std::sort(sorted.begin(), sorted.end());
+      std::size_t k = 0;
+      for(const auto& [lo, hi] : unions) {
+        while(k < sorted.size() && sorted[k].first < lo) ++k;
+        for(; k + 1 < sorted.size() && sorted[k + 1].first <= hi; ++k) {
+          Index u = sorted[k].second, v = sorted[k + 1].second;
+          if(v < u) std::swap(u, v);
+          edges.push_back({l, u, v});
+        }
+        ++k;
+      }
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+  }
+
+  // removes edges with an end of degree 1, repeatedly, then the points without edges
+  void remove_dangling_edges()
+  {
+    for(;;) {
+      std::vector<Index> degree(w_.vertex_lines.size(), 0);
+      for(const auto& e : w_.edges) { ++degree[e[1]]; ++degree[e[2]]; }
+      const std::size_t before = w_.edges.size();
+      w_.edges.erase(std::remove_if(w_.edges.begin(), w_.edges.end(),
+                                    [&](const auto& e) { return degree[e[1]] == 1 || degree[e[2]] == 1; }),
+                     w_.edges.end());
+      if(w_.edges.size() == before) break;
+    }
+    const std::size_t before = w_.vertex_lines.size();
+    compact_vertices();
+    counts_.removed_points += before - w_.vertex_lines.size();
+  }
+
+  // drops points without edges and renumbers
+  void compact_vertices()
+  {
+    std::vector<Index> degree(w_.vertex_lines.size(), 0);
+    for(const auto& e : w_.edges) { ++degree[e[1]]; ++degree[e[2]]; }
+    std::vector<Index> renumber(w_.vertex_lines.size(), Index(-1));
+    std::vector<std::vector<Index>> kept;
+    for(Index v = 0; v < w_.vertex_lines.size(); ++v)
+      if(degree[v] > 0) { renumber[v] = Index(kept.size()); kept.push_back(std::move(w_.vertex_lines[v])); }
+    w_.vertex_lines = std::move(kept);
+    for(auto& e : w_.edges) { e[1] = renumber[e[1]]; e[2] = renumber[e[2]]; }
+    // lines without edges disappear too
+    std::vector<Index> used(w_.lines.size(), Index(-1));
+    for(const auto& e : w_.edges) used[e[0]] = 0;
+    for(const auto& l : w_.vertex_lines) for(Index x : l) used[x] = 0;
+    std::vector<Line_state> lines;
+    for(Index l = 0; l < w_.lines.size(); ++l)
+      if(used[l] == 0) { used[l] = Index(lines.size()); lines.push_back(w_.lines[l]); }
+    w_.lines = std::move(lines);
+    for(auto& e : w_.edges) e[0] = used[e[0]];
+    for(auto& l : w_.vertex_lines) for(Index& x : l) x = used[x];
+  }
+
+  Working_partition& w_;
+  Reduction_thresholds t_;
+  Reduction_counts counts_;
+  std::vector<Index> line_parent_, vertex_parent_;
+  std::vector<Index> conflicts_;
+
+public:
+  // lines (indices at the start of the round) of pairs of distant points sharing two lines
+  const std::vector<Index>& conflicts() const { return conflicts_; }
+};
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_PARTITION_REDUCTIONS_2_H

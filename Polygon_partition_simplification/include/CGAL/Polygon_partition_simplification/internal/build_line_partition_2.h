@@ -1,0 +1,242 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_BUILD_LINE_PARTITION_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_BUILD_LINE_PARTITION_2_H
+
+// From exact segments to a partition in line representation: the segments are inserted in
+// an exact CGAL arrangement (which finds every intersection and merges overlaps); each of
+// its edges gets the supporting line of its segment, identified exactly (collinear pieces
+// share one line); edges that dangle or bridge (same face on both sides) are dropped and
+// points on a single line (where two collinear edges meet) are removed by joining their edges.
+
+#include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
+
+#include <CGAL/Arr_consolidated_curve_data_traits_2.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+using Exact_kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+
+struct Exact_piece
+{
+  Exact_kernel::Segment_2 segment;
+  bool is_fixed = false; // a side of a kinetic bounding box
+};
+
+// Exact canonical form of a line: (1, b/a, c/a) when a != 0, else (0, 1, c/b).
+struct Line_key
+{
+  bool vertical_normal; // a == 0
+  Exact_kernel::FT u, v;
+
+  explicit Line_key(const Exact_kernel::Line_2& l)
+  {
+    vertical_normal = CGAL::is_zero(l.a());
+    if(vertical_normal) { u = l.c() / l.b(); v = 0; }
+    else { u = l.b() / l.a(); v = l.c() / l.a(); }
+  }
+  bool operator<(const Line_key& o) const
+  {
+    if(vertical_normal != o.vertical_normal) return vertical_normal < o.vertical_normal;
+    const CGAL::Comparison_result cu = CGAL::compare(u, o.u);
+    if(cu != CGAL::EQUAL) return cu == CGAL::SMALLER;
+    return CGAL::compare(v, o.v) == CGAL::SMALLER;
+  }
+};
+
+inline Line_key key_of(const Exact_kernel::Segment_2& s)
+{
+  return Line_key(Exact_kernel::Line_2(s.source(), s.target()));
+}
+
+template <class GeomTraits>
+Line_partition_2<GeomTraits>
+build_line_partition(const std::vector<Exact_piece>& pieces,
+                     const std::vector<Exact_kernel::Segment_2>& metric_segments,
+                     const typename Line_partition_2<GeomTraits>::Frame& frame)
+{
+  using Partition = Line_partition_2<GeomTraits>;
+  using Traits = CGAL::Arr_consolidated_curve_data_traits_2<
+    CGAL::Arr_segment_traits_2<Exact_kernel>, std::size_t>;
+  using Arrangement = CGAL::Arrangement_2<Traits>;
+  using Vertex_handle = typename Arrangement::Vertex_const_handle;
+
+  // Lines in the exact order of their canonical keys: indices do not depend on input order.
+  // Keys are computed per piece; the arrangement carries each piece's line to its edges
+  // (overlapping pieces are on the same line, so an edge has one line).
+  std::map<Line_key, std::size_t> line_index;
+  std::vector<std::map<Line_key, std::size_t>::iterator> piece_line;
+  piece_line.reserve(pieces.size());
+  for(const Exact_piece& p : pieces) piece_line.push_back(line_index.emplace(key_of(p.segment), 0).first);
+  if(line_index.empty())
+    throw Input_error(Input_error_code::EMPTY_INPUT, "the input has no edge");
+  std::vector<typename Partition::Line> lines;
+  lines.reserve(line_index.size());
+  for(auto& [key, index] : line_index) {
+    index = lines.size();
+    typename Partition::Line line;
+    // a x + b y + c = 0 in input coordinates becomes, in the normalized frame,
+    // a x' + b y' + (a cx + b cy + c) / s = 0.
+    const Exact_kernel::FT a = key.vertical_normal ? 0 : 1, b = key.vertical_normal ? 1 : key.u,
+                           c = key.vertical_normal ? key.u : key.v;
+    const Exact_kernel::FT c_frame = (a * frame.center_x + b * frame.center_y + c) / frame.scale;
+    line.coefficients = normalized_line({CGAL::to_double(a), CGAL::to_double(b),
+                                         CGAL::to_double(c_frame)});
+    lines.push_back(line);
+  }
+  for(std::size_t i = 0; i < pieces.size(); ++i)
+    if(pieces[i].is_fixed) lines[piece_line[i]->second].is_fixed = true;
+
+  Arrangement arrangement;
+  {
+    std::vector<typename Traits::Curve_2> curves;
+    curves.reserve(pieces.size());
+    for(std::size_t i = 0; i < pieces.size(); ++i)
+      curves.emplace_back(pieces[i].segment, piece_line[i]->second);
+    CGAL::insert(arrangement, curves.begin(), curves.end());
+  }
+
+  // Metrics: from the given segments, or from the pieces themselves.
+  auto add_metric = [&](const Exact_kernel::Segment_2& s, std::size_t index) {
+    auto& line = lines[index];
+    auto normalized = [&](const Exact_kernel::Point_2& p) {
+      return std::array<double, 2>{(CGAL::to_double(p.x()) - frame.center_x) / frame.scale,
+                                   (CGAL::to_double(p.y()) - frame.center_y) / frame.scale};
+    };
+    const auto p = normalized(s.source()), q = normalized(s.target());
+    line.metric.add_segment(p[0], p[1], q[0], q[1]);
+    ++line.number_of_segments;
+  };
+  for(const auto& s : metric_segments) {
+    auto it = line_index.find(key_of(s));
+    if(it != line_index.end()) add_metric(s, it->second);
+  }
+  for(std::size_t i = 0; i < pieces.size(); ++i)
+    if(metric_segments.empty() || pieces[i].is_fixed) add_metric(pieces[i].segment, piece_line[i]->second);
+
+  // Graph of the arrangement, with the line of each edge; dangling edges are pruned.
+  std::map<Vertex_handle, std::size_t> vertex_index;
+  std::vector<Vertex_handle> arrangement_vertices;
+  for(auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v) {
+    vertex_index.emplace(v, arrangement_vertices.size());
+    arrangement_vertices.push_back(v);
+  }
+  struct Graph_edge { std::size_t u, v, line; bool alive; };
+  std::vector<Graph_edge> graph_edges;
+  std::vector<std::vector<std::size_t>> incident(arrangement_vertices.size());
+  for(auto h = arrangement.edges_begin(); h != arrangement.edges_end(); ++h) {
+    const std::size_t u = vertex_index.at(h->source()), v = vertex_index.at(h->target());
+    incident[u].push_back(graph_edges.size());
+    incident[v].push_back(graph_edges.size());
+    // an edge with the same face on both sides (a bridge or an antenna) bounds no cell
+    graph_edges.push_back({u, v, h->curve().data().front(), h->face() != h->twin()->face()});
+  }
+  std::vector<std::size_t> degree(incident.size());
+  std::vector<std::size_t> stack;
+  for(std::size_t v = 0; v < incident.size(); ++v) {
+    degree[v] = 0;
+    for(std::size_t e : incident[v]) degree[v] += graph_edges[e].alive ? 1 : 0;
+    if(degree[v] == 1) stack.push_back(v);
+  }
+  while(!stack.empty()) {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    for(std::size_t e : incident[v]) {
+      if(!graph_edges[e].alive) continue;
+      graph_edges[e].alive = false;
+      for(std::size_t w : {graph_edges[e].u, graph_edges[e].v})
+        if(--degree[w] == 1) stack.push_back(w);
+    }
+  }
+
+  // Points: vertices on at least two lines. Edges: chains through single-line vertices.
+  std::vector<std::vector<std::size_t>> vertex_lines(incident.size());
+  for(std::size_t v = 0; v < incident.size(); ++v) {
+    for(std::size_t e : incident[v])
+      if(graph_edges[e].alive) vertex_lines[v].push_back(graph_edges[e].line);
+    std::sort(vertex_lines[v].begin(), vertex_lines[v].end());
+    vertex_lines[v].erase(std::unique(vertex_lines[v].begin(), vertex_lines[v].end()),
+                          vertex_lines[v].end());
+  }
+  // Points are numbered in the order of their (sorted) line sets: input-order independent.
+  std::vector<std::size_t> point_vertices;
+  for(std::size_t v = 0; v < incident.size(); ++v)
+    if(vertex_lines[v].size() >= 2) point_vertices.push_back(v);
+  std::sort(point_vertices.begin(), point_vertices.end(), [&](std::size_t x, std::size_t y) {
+    if(vertex_lines[x] != vertex_lines[y]) return vertex_lines[x] < vertex_lines[y];
+    return arrangement_vertices[x]->point() < arrangement_vertices[y]->point();
+  });
+  std::vector<std::size_t> point_index(incident.size(), std::size_t(-1));
+  std::vector<typename Partition::Vertex> vertices;
+  for(std::size_t v : point_vertices) {
+    point_index[v] = vertices.size();
+    vertices.push_back({vertex_lines[v]});
+  }
+  std::vector<typename Partition::Edge> edges;
+  std::vector<bool> visited(graph_edges.size(), false);
+  for(std::size_t start : point_vertices)
+    for(std::size_t e0 : incident[start]) {
+      if(!graph_edges[e0].alive || visited[e0]) continue;
+      std::size_t v = start, e = e0;
+      for(;;) {
+        visited[e] = true;
+        v = graph_edges[e].u == v ? graph_edges[e].v : graph_edges[e].u;
+        if(point_index[v] != std::size_t(-1)) break;
+        std::size_t next = std::size_t(-1); // a single-line vertex has exactly one other edge
+        for(std::size_t f : incident[v])
+          if(graph_edges[f].alive && f != e) next = f;
+        e = next;
+      }
+      std::size_t s = point_index[start], t = point_index[v];
+      if(s > t) std::swap(s, t);
+      edges.push_back({graph_edges[e0].line, s, t});
+    }
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+    return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
+  });
+  if(edges.empty())
+    throw Input_error(Input_error_code::NO_CELL,
+                      "the input bounds no cell: every edge dangles; give closed polygons or "
+                      "segments that meet");
+
+  // Drop the lines no edge uses, renumbering the others in order.
+  std::vector<std::size_t> new_line(lines.size(), std::size_t(-1));
+  for(const auto& e : edges) new_line[e.line] = 0;
+  std::vector<typename Partition::Line> kept;
+  for(std::size_t l = 0; l < lines.size(); ++l)
+    if(new_line[l] == 0) { new_line[l] = kept.size(); kept.push_back(lines[l]); }
+  for(auto& e : edges) e.line = new_line[e.line];
+  for(auto& v : vertices)
+    for(auto& l : v.lines) l = new_line[l];
+  return Partition(frame, std::move(kept), std::move(vertices), std::move(edges));
+}
+
+// The normalized frame of a set of points: center and half-diagonal of their smallest
+// enclosing rectangle (a unit scale when they all coincide).
+template <class Frame>
+Frame frame_of(const Enclosing_rectangle_2& rectangle)
+{
+  Frame frame;
+  frame.center_x = rectangle.center[0];
+  frame.center_y = rectangle.center[1];
+  frame.scale = rectangle.half_diagonal() > 0 ? rectangle.half_diagonal() : 1.;
+  return frame;
+}
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_BUILD_LINE_PARTITION_2_H

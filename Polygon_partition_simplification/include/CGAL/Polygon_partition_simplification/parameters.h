@@ -1,0 +1,78 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETERS_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETERS_H
+
+// Named parameters of this package that CGAL 5.5 does not have. Each `foo(x)` starts a
+// pack and `foo(x, np)` appends to one; CGAL's own parameters are re-exported, so
+// `Polygon_partition_simplification::parameters::maximum_angle(5)` works as well.
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal_np {
+
+enum concurrency_weight_t { concurrency_weight };
+enum orthogonality_weight_t { orthogonality_weight };
+enum collapse_distance_t { collapse_distance };
+enum point_merge_distance_t { point_merge_distance };
+enum line_merge_distance_t { line_merge_distance };
+enum initial_step_t { initial_step };
+enum step_ratio_t { step_ratio };
+enum minimum_step_t { minimum_step };
+enum maximum_number_of_crossings_t { maximum_number_of_crossings };
+enum crossing_distance_t { crossing_distance };
+enum bounding_box_margin_t { bounding_box_margin };
+
+} // namespace internal_np
+
+namespace parameters {
+
+using namespace CGAL::parameters;
+
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(NAME)                                    \
+  template <class T>                                                                              \
+  Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& t)                           \
+  {                                                                                               \
+    return Named_function_parameters<T, internal_np::NAME##_t>(t);                                \
+  }                                                                                               \
+  template <class T, class U, class Tag, class Base>                                              \
+  Named_function_parameters<T, internal_np::NAME##_t, Named_function_parameters<U, Tag, Base>>    \
+  NAME(const T& t, const Named_function_parameters<U, Tag, Base>& np)                            \
+  {                                                                                               \
+    return Named_function_parameters<T, internal_np::NAME##_t,                                    \
+                                     Named_function_parameters<U, Tag, Base>>(t, np);             \
+  }
+
+/// \f$\lambda_1\f$, weight of the concurrency (edge collapse) term
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(concurrency_weight)
+/// \f$\lambda_2\f$, weight of the orthogonality term
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(orthogonality_weight)
+/// \f$\epsilon\f$, the largest length of an edge whose collapse is wanted (input units)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(collapse_distance)
+/// \f$d_P\f$, distance below which two points are merged (input units)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(point_merge_distance)
+/// \f$d_L\f$, distance below which two normalized lines are merged
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(line_merge_distance)
+/// \f$\alpha_0\f$, the first gradient step of each descent
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(initial_step)
+/// \f$r\f$, ratio of the geometric step sequence \f$\alpha_k = \alpha_0 r^k\f$
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(step_ratio)
+/// \f$\alpha_{min}\f$, the step at which a descent stops
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(minimum_step)
+/// number of initial segments a growing segment may cross before the next one stops it
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(maximum_number_of_crossings)
+/// a growing segment crosses instead of stopping when its next intersection is closer than this
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(crossing_distance)
+/// margin of the bounding rectangle of a kinetic partition, relative to its half-diagonal
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(bounding_box_margin)
+
+#undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER
+
+} // namespace parameters
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETERS_H

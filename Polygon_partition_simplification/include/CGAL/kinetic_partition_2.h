@@ -1,0 +1,172 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_KINETIC_PARTITION_2_H
+#define CGAL_KINETIC_PARTITION_2_H
+
+#include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Kinetic_propagation_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/build_line_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/parameters.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgPolygonPartitionSimplificationRef
+
+computes the kinetic partition of a set of 2D segments (section 3.2.2 of the thesis) inside
+a rectangle around them, and returns it in line representation.
+
+Every segment grows from both ends at unit speed. When a growing end reaches another segment
+(its initial part or the part it has grown so far), it stops there if it arrives last; when
+both arrive at the same time, the end of the segment with the larger index stops. Growing
+ends stop at the rectangle, which is the smallest-area rectangle enclosing the segments, with
+each side moved outward by a margin (so the partition moves with the input under rigid
+motions and scalings). Intersection points and arrival times are computed exactly and
+events are processed in exact time order, so the result is the exact kinetic partition of
+the input coordinates.
+
+The partition's lines are the supporting lines of the segments (exactly collinear segments
+share one) and the four sides of the rectangle (marked `is_fixed`); the fidelity metric of a
+line is accumulated from the input segments on it (Eq. 3.5).
+
+\tparam SegmentRange a range of `Segment_2` of a CGAL kernel `K`
+\tparam NamedParameters a sequence of named parameters
+
+\param segments the input segments
+\param np optional named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{maximum_number_of_crossings}
+    \cgalParamDescription{number of segments a growing end may cross before the next one
+                          stops it (`Polygon_partition_simplification::parameters`)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{crossing_distance}
+    \cgalParamDescription{a growing end crosses a segment instead of stopping at it when its
+                          next intersection is closer than this length (input units); this
+                          makes the connectivity of the partition less sensitive to small
+                          perturbations of the segments; 0 disables it}
+    \cgalParamType{`double`}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{bounding_box_margin}
+    \cgalParamDescription{margin added on each side of the enclosing rectangle, relative to its
+                          half-diagonal}
+    \cgalParamType{`double`}
+    \cgalParamDefault{0.05}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\return the partition, in line representation
+
+\throws Polygon_partition_simplification::Input_error when `segments` is empty
+(`EMPTY_INPUT`), has a NaN or infinite coordinate (`NON_FINITE_COORDINATE`), a segment of
+zero length (`ZERO_LENGTH_SEGMENT`) or twice the same segment (`DUPLICATED_SEGMENT`), or when
+a parameter is negative (`INVALID_PARAMETER`).
+*/
+template <class SegmentRange,
+          class NamedParameters = parameters::Default_named_parameters>
+Polygon_partition_simplification::Line_partition_2<
+  typename Kernel_traits<typename std::iterator_traits<
+    typename SegmentRange::const_iterator>::value_type>::Kernel>
+kinetic_partition_2(const SegmentRange& segments,
+                    const NamedParameters& np = parameters::default_values())
+{
+  namespace PPS = Polygon_partition_simplification;
+  using Segment = typename std::iterator_traits<typename SegmentRange::const_iterator>::value_type;
+  using K = typename Kernel_traits<Segment>::Kernel;
+  using Partition = PPS::Line_partition_2<K>;
+  using EK = PPS::internal::Exact_kernel;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using PPS::Input_error;
+  using PPS::Input_error_code;
+
+  const std::size_t maximum_crossings = choose_parameter(
+    get_parameter(np, PPS::internal_np::maximum_number_of_crossings), std::size_t(0));
+  const double crossing_distance =
+    choose_parameter(get_parameter(np, PPS::internal_np::crossing_distance), 0.);
+  const double margin =
+    choose_parameter(get_parameter(np, PPS::internal_np::bounding_box_margin), 0.05);
+  if(!(crossing_distance >= 0) || !(margin > 0) || !std::isfinite(margin) ||
+     !std::isfinite(crossing_distance))
+    throw Input_error(Input_error_code::INVALID_PARAMETER,
+                      "crossing_distance must be >= 0 and bounding_box_margin > 0, both finite");
+
+  // Checks: nothing is modified, an error says which segment is wrong.
+  std::vector<std::array<double, 4>> input;
+  for(const Segment& s : segments) {
+    const std::array<double, 4> c{CGAL::to_double(s.source().x()), CGAL::to_double(s.source().y()),
+                                  CGAL::to_double(s.target().x()), CGAL::to_double(s.target().y())};
+    const std::string which = "segment " + std::to_string(input.size());
+    for(double x : c)
+      if(!std::isfinite(x))
+        throw Input_error(Input_error_code::NON_FINITE_COORDINATE,
+                          which + " has a NaN or infinite coordinate");
+    if(c[0] == c[2] && c[1] == c[3])
+      throw Input_error(Input_error_code::ZERO_LENGTH_SEGMENT,
+                        which + " has zero length; remove it");
+    input.push_back(c);
+  }
+  if(input.empty())
+    throw Input_error(Input_error_code::EMPTY_INPUT, "no segment was given");
+  {
+    std::vector<std::pair<std::array<double, 4>, std::size_t>> sorted;
+    for(std::size_t i = 0; i < input.size(); ++i) {
+      std::array<double, 4> c = input[i];
+      if(std::make_pair(c[2], c[3]) < std::make_pair(c[0], c[1])) c = {c[2], c[3], c[0], c[1]};
+      sorted.emplace_back(c, i);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    for(std::size_t i = 1; i < sorted.size(); ++i)
+      if(sorted[i].first == sorted[i - 1].first)
+        throw Input_error(Input_error_code::DUPLICATED_SEGMENT,
+                          "segments " + std::to_string(sorted[i - 1].second) + " and " +
+                            std::to_string(sorted[i].second) + " are the same; remove one");
+  }
+
+  std::vector<std::array<double, 2>> endpoints;
+  for(const auto& c : input) { endpoints.push_back({c[0], c[1]}); endpoints.push_back({c[2], c[3]}); }
+  const PPS::internal::Enclosing_rectangle_2 rectangle = PPS::internal::enclosing_rectangle(endpoints);
+  const double half_diagonal = rectangle.half_diagonal();
+  const auto corners = rectangle.corners(margin * half_diagonal);
+  std::array<EK::Point_2, 4> box;
+  for(int k = 0; k < 4; ++k) box[k] = EK::Point_2(corners[k][0], corners[k][1]);
+
+  std::vector<EK::Segment_2> exact_segments;
+  exact_segments.reserve(input.size());
+  for(const auto& c : input) exact_segments.emplace_back(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
+
+  PPS::internal::Kinetic_propagation_2 propagation(exact_segments, box, maximum_crossings,
+                                                   crossing_distance);
+  propagation.run();
+
+  std::vector<PPS::internal::Exact_piece> pieces;
+  pieces.reserve(input.size() + 4);
+  for(std::size_t i = 0; i < input.size(); ++i) pieces.push_back({propagation.extent(i), false});
+  for(int k = 0; k < 4; ++k) pieces.push_back({EK::Segment_2(box[k], box[(k + 1) % 4]), true});
+
+  PPS::internal::Enclosing_rectangle_2 framed = rectangle;
+  framed.half_extent = {rectangle.half_extent[0] + margin * half_diagonal,
+                        rectangle.half_extent[1] + margin * half_diagonal};
+  return PPS::internal::build_line_partition<K>(
+    pieces, exact_segments, PPS::internal::frame_of<typename Partition::Frame>(framed));
+}
+
+} // namespace CGAL
+
+#endif // CGAL_KINETIC_PARTITION_2_H

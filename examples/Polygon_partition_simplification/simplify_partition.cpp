@@ -1,0 +1,164 @@
+// simplify_partition: kinetic partition of 2D segments, then its simplification in line space.
+//
+//   simplify_partition SEGMENTS OUTPUT [--lambda1 V] [--lambda2 V] [--epsilon V]
+//                      [--alpha-max DEG] [--svg FILE] [--json]
+//
+// SEGMENTS: one segment per line, "x0 y0 x1 y1" (blank lines and lines starting with '#' are
+// skipped). OUTPUT: the cells of the simplified partition, as GeoJSON (.geojson, .json) or
+// WKT (.wkt, a MULTIPOLYGON). On bad input: a one-line reason, exit code 1, no output file.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/WKT.h>
+#include <CGAL/Polygon_partition_simplification/IO/GeoJSON.h>
+#include <CGAL/kinetic_partition_2.h>
+#include <CGAL/simplify_polygon_partition_2.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+namespace PPS = CGAL::Polygon_partition_simplification;
+using Partition = PPS::Line_partition_2<K>;
+
+static std::vector<K::Segment_2> read_segments(const std::string& file)
+{
+  std::ifstream in(file);
+  if(!in) throw std::runtime_error("cannot read " + file);
+  std::vector<K::Segment_2> segments;
+  std::string line;
+  for(std::size_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream is(line);
+    std::string first;
+    if(!(is >> first) || first[0] == '#') continue;
+    is.str(line);
+    is.clear();
+    double c[4];
+    std::string rest;
+    if(!(is >> c[0] >> c[1] >> c[2] >> c[3]) || (is >> rest))
+      throw std::runtime_error(file + ":" + std::to_string(number) + ": expected four numbers x0 y0 x1 y1");
+    segments.emplace_back(K::Point_2(c[0], c[1]), K::Point_2(c[2], c[3]));
+  }
+  return segments;
+}
+
+static std::string extension(const std::string& file)
+{
+  const auto dot = file.rfind('.');
+  std::string e = dot == std::string::npos ? "" : file.substr(dot + 1);
+  for(char& ch : e) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  return e;
+}
+
+// the edges of both partitions side by side, before on the left
+static void write_svg(const std::string& file, const Partition& before, const Partition& after)
+{
+  CGAL::Bbox_2 box;
+  for(std::size_t e = 0; e < before.number_of_edges(); ++e) box += before.segment(e).bbox();
+  const double w = box.xmax() - box.xmin(), h = box.ymax() - box.ymin(), gap = 0.05 * w;
+  std::ofstream out(file);
+  out << "<svg xmlns='http://www.w3.org/2000/svg' viewBox='" << box.xmin() - gap << ' ' << -box.ymax() - gap
+      << ' ' << 2 * w + 3 * gap << ' ' << h + 2 * gap << "' width='1200'>\n";
+  const double stroke = 0.002 * w;
+  auto draw = [&](const Partition& p, double shift, const char* color) {
+    for(std::size_t e = 0; e < p.number_of_edges(); ++e) {
+      const auto s = p.segment(e);
+      out << "<line x1='" << s.source().x() + shift << "' y1='" << -s.source().y() << "' x2='"
+          << s.target().x() + shift << "' y2='" << -s.target().y() << "' stroke='" << color
+          << "' stroke-width='" << stroke << "'/>\n";
+    }
+  };
+  draw(before, 0, "black");
+  draw(after, w + gap, "darkblue");
+  out << "</svg>\n";
+}
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"Kinetic partition of 2D segments and its simplification in line space"};
+  std::string input, output, svg;
+  double lambda1 = 0.005, lambda2 = 0.0005, alpha_max = 5;
+  double epsilon = -1;
+  bool json = false;
+  app.add_option("SEGMENTS", input, "segments, one per line: x0 y0 x1 y1")->required();
+  app.add_option("OUTPUT", output, "cells of the simplified partition (.geojson, .json or .wkt)")->required();
+  app.add_option("--lambda1", lambda1, "weight of the concurrency term (edge collapses)");
+  app.add_option("--lambda2", lambda2, "weight of the orthogonality term");
+  app.add_option("--epsilon", epsilon, "longest edge to collapse, input units (default: 1% of the half-diagonal)");
+  app.add_option("--alpha-max", alpha_max, "angle to 90 degrees under which lines are pulled to orthogonality");
+  app.add_option("--svg", svg, "draws the partition before and after, side by side");
+  app.add_flag("--json", json, "prints one JSON line of statistics");
+  CLI11_PARSE(app, argc, argv);
+
+  const std::string format = extension(output);
+  const std::string temporary = output + ".partial";
+  try {
+    if(format != "geojson" && format != "json" && format != "wkt")
+      throw std::runtime_error("unknown output format '." + format + "': use .geojson, .json or .wkt");
+    const std::vector<K::Segment_2> segments = read_segments(input);
+
+    const auto t0 = std::chrono::steady_clock::now();
+    Partition partition = CGAL::kinetic_partition_2(segments);
+    const auto t1 = std::chrono::steady_clock::now();
+    const Partition before = partition;
+    const double scale = partition.frame().scale;
+    const auto stats = CGAL::simplify_polygon_partition_2(
+      partition, PPS::parameters::concurrency_weight(lambda1,
+                 PPS::parameters::orthogonality_weight(lambda2,
+                 PPS::parameters::collapse_distance(epsilon > 0 ? epsilon : 0.01 * scale,
+                 PPS::parameters::maximum_angle(alpha_max)))));
+
+    std::vector<Partition::Polygon_with_holes_2> cells;
+    partition.cells(std::back_inserter(cells));
+    {
+      std::ofstream out(temporary);
+      if(!out) throw std::runtime_error("cannot write " + output);
+      if(format == "wkt") CGAL::IO::write_multi_polygon_WKT(out, cells);
+      else PPS::IO::write_GeoJSON(out, cells);
+      if(!out) throw std::runtime_error("cannot write " + output);
+    }
+    if(std::rename(temporary.c_str(), output.c_str()) != 0)
+      throw std::runtime_error("cannot write " + output);
+    if(!svg.empty()) write_svg(svg, before, partition);
+
+    if(json) {
+      nlohmann::json j;
+      j["segments"] = segments.size();
+      j["lines_before"] = stats.lines_before;
+      j["lines_after"] = stats.lines_after;
+      j["points_before"] = stats.points_before;
+      j["points_after"] = stats.points_after;
+      j["cells_before"] = stats.cells_before;
+      j["cells_after"] = stats.cells_after;
+      j["orthogonal_pairs_before"] = stats.orthogonal_pairs_before;
+      j["orthogonal_pairs_after"] = stats.orthogonal_pairs_after;
+      j["iterations"] = stats.iterations;
+      j["rounds"] = stats.rounds;
+      j["line_merges"] = stats.line_merges;
+      j["point_merges"] = stats.point_merges;
+      j["removed_points"] = stats.removed_points;
+      j["far_points"] = stats.far_points;
+      j["rejected_rounds"] = stats.rejected_rounds;
+      j["kinetic_s"] = std::chrono::duration<double>(t1 - t0).count();
+      j["simplification_s"] = stats.seconds;
+      std::cout << j.dump() << std::endl;
+    } else {
+      std::cout << "lines " << stats.lines_before << " -> " << stats.lines_after << ", cells "
+                << stats.cells_before << " -> " << stats.cells_after << "; cells written to " << output
+                << std::endl;
+    }
+  } catch(const std::exception& e) {
+    std::remove(temporary.c_str());
+    std::cerr << "simplify_partition: error: " << e.what() << std::endl;
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,1 @@
+data/footprints_25.txt

@@ -1,0 +1,291 @@
+// Partitions in line representation: the kinetic partition against its own rules checked by
+// brute force with exact arithmetic, against CGAL's arrangement of full lines when segments
+// may cross everything, builders from polygons and arrangements, cells, bad input.
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_partition_simplification/IO/GeoJSON.h>
+#include <CGAL/Polygon_partition_simplification/line_partition_from_geometry_2.h>
+#include <CGAL/kinetic_partition_2.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+namespace PPS = CGAL::Polygon_partition_simplification;
+using Partition = PPS::Line_partition_2<K>;
+
+#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
+
+std::vector<K::Segment_2> random_segments(std::size_t n, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 100), d(-8, 8);
+  std::vector<K::Segment_2> s;
+  while(s.size() < n) {
+    const double x = u(rng), y = u(rng), dx = d(rng), dy = d(rng);
+    if(dx == 0 && dy == 0) continue;
+    s.emplace_back(K::Point_2(x, y), K::Point_2(x + dx, y + dy));
+  }
+  return s;
+}
+
+double total_area(const Partition& p)
+{
+  std::vector<Partition::Polygon_with_holes_2> cells;
+  p.cells(std::back_inserter(cells));
+  double area = 0;
+  for(const auto& c : cells) {
+    CHECK(c.outer_boundary().is_simple());
+    area += CGAL::to_double(c.outer_boundary().area());
+    for(auto h = c.holes_begin(); h != c.holes_end(); ++h) area += CGAL::to_double(h->area());
+  }
+  return area;
+}
+
+// The rules of the kinetic framework, checked on the extents by brute force (exact).
+void test_kinetic_rules(unsigned seed)
+{
+  const auto input = random_segments(40, seed);
+  std::vector<EK::Segment_2> segments;
+  for(const auto& s : input)
+    segments.emplace_back(EK::Point_2(s.source().x(), s.source().y()), EK::Point_2(s.target().x(), s.target().y()));
+  const std::array<EK::Point_2, 4> box{EK::Point_2(-20, -20), EK::Point_2(120, -20), EK::Point_2(120, 120), EK::Point_2(-20, 120)};
+  PPS::internal::Kinetic_propagation_2 propagation(segments, box, 0, 0);
+  propagation.run();
+  std::vector<EK::Segment_2> extents;
+  for(std::size_t i = 0; i < segments.size(); ++i) extents.push_back(propagation.extent(i));
+  auto on_box = [&](const EK::Point_2& p) {
+    for(int k = 0; k < 4; ++k)
+      if(EK::Segment_2(box[k], box[(k + 1) % 4]).has_on(p)) return true;
+    return false;
+  };
+  // arrival time of segment j at a point of its line: 0 on the segment, else the distance
+  auto arrival2 = [&](std::size_t j, const EK::Point_2& p) {
+    if(segments[j].has_on(p)) return EK::FT(0);
+    return std::min(CGAL::squared_distance(p, segments[j].source()), CGAL::squared_distance(p, segments[j].target()));
+  };
+  for(std::size_t i = 0; i < segments.size(); ++i) {
+    CHECK(extents[i].has_on(segments[i].source()) && extents[i].has_on(segments[i].target()));
+    for(const EK::Point_2& end : {extents[i].source(), extents[i].target()}) {
+      if(segments[i].has_on(end)) continue; // did not grow on this side
+      if(on_box(end)) continue;
+      // stopped by an extent that got there no later
+      bool stopped = false;
+      for(std::size_t j = 0; j < segments.size() && !stopped; ++j)
+        if(j != i && extents[j].has_on(end) && arrival2(j, end) <= arrival2(i, end)) stopped = true;
+      CHECK(stopped);
+    }
+    for(std::size_t j = i + 1; j < segments.size(); ++j) {
+      const auto x = CGAL::intersection(extents[i], extents[j]);
+      if(!x) continue;
+      const EK::Point_2* p = boost::get<EK::Point_2>(&*x);
+      if(!p) continue;
+      const bool end_of_one = *p == extents[i].source() || *p == extents[i].target() ||
+                              *p == extents[j].source() || *p == extents[j].target();
+      // a proper crossing happens only where both initial segments already cross
+      if(!end_of_one) CHECK(segments[i].has_on(*p) && segments[j].has_on(*p));
+    }
+  }
+  // the same extents for the segments in another order
+  std::vector<std::size_t> order(segments.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = order.size() - 1 - i;
+  std::vector<EK::Segment_2> shuffled;
+  for(std::size_t i : order) shuffled.push_back(segments[i]);
+  PPS::internal::Kinetic_propagation_2 again(shuffled, box, 0, 0);
+  again.run();
+  for(std::size_t k = 0; k < order.size(); ++k) {
+    const EK::Segment_2 a = again.extent(k), b = extents[order[k]];
+    CHECK((a.source() == b.source() && a.target() == b.target()) || (a.source() == b.target() && a.target() == b.source()));
+  }
+}
+
+void test_simple_configurations()
+{
+  // one segment: the box cut in two
+  {
+    Partition p = CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 0}}});
+    CHECK(p.is_valid());
+    CHECK(p.number_of_lines() == 5 && p.number_of_cells() == 2);
+  }
+  // a T: the short segment below stops at the long one
+  {
+    std::vector<K::Segment_2> s{{{0, 0}, {10, 0}}, {{5, -4}, {5, -1}}};
+    Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid() && p.number_of_cells() == 3);
+  }
+  // the last to arrive stops: segment 0 grows right and reaches x = 3 at time 2, segment 1
+  // grows up and gets there at time 0.5 first, so segment 0 stops and 1 goes on to the box
+  {
+    std::vector<K::Segment_2> s{{{0, 0}, {1, 0}}, {{3, -1}, {3, -0.5}}, {{-6, 6}, {12, 6}}};
+    Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid());
+    double rightmost = -1e9;
+    for(std::size_t e = 0; e < p.number_of_edges(); ++e) {
+      const auto seg = p.segment(e);
+      if(std::abs(seg.source().y()) < 1e-9 && std::abs(seg.target().y()) < 1e-9)
+        rightmost = std::max({rightmost, seg.source().x(), seg.target().x()});
+    }
+    CHECK(std::abs(rightmost - 3) < 1e-9);
+  }
+  // two crossing segments: four cells
+  {
+    std::vector<K::Segment_2> s{{{0, 0}, {2, 2}}, {{0, 2}, {2, 0}}};
+    CHECK(CGAL::kinetic_partition_2(s).number_of_cells() == 4);
+  }
+  // exactly collinear segments share one line
+  {
+    std::vector<K::Segment_2> s{{{0, 0}, {1, 1}}, {{3, 3}, {4, 4}}, {{0, 4}, {1, 4}}};
+    Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid() && p.number_of_lines() == 4 + 2);
+  }
+}
+
+// With unlimited crossings every segment reaches the box: the partition is the arrangement
+// of the full lines clipped to the box, computed independently by CGAL.
+void test_against_line_arrangement()
+{
+  const auto s = random_segments(25, 7);
+  Partition p = CGAL::kinetic_partition_2(s, PPS::parameters::maximum_number_of_crossings(std::size_t(1000)));
+  CHECK(p.is_valid());
+  // the box of the partition: its four fixed lines
+  std::vector<EK::Segment_2> curves;
+  std::vector<EK::Point_2> corners;
+  for(std::size_t e = 0; e < p.number_of_edges(); ++e)
+    if(p.lines()[p.edges()[e].line].is_fixed) {
+      const auto seg = p.segment(e);
+      curves.emplace_back(EK::Point_2(seg.source().x(), seg.source().y()), EK::Point_2(seg.target().x(), seg.target().y()));
+    }
+  CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<EK>> box_arrangement;
+  CGAL::insert(box_arrangement, curves.begin(), curves.end());
+  // clip each full line to the box (the box is convex)
+  std::vector<EK::Segment_2> all = curves;
+  for(const auto& seg : s) {
+    const EK::Line_2 line(EK::Point_2(seg.source().x(), seg.source().y()), EK::Point_2(seg.target().x(), seg.target().y()));
+    std::vector<EK::Point_2> hits;
+    for(const auto& c : curves)
+      if(auto x = CGAL::intersection(line, c))
+        if(const EK::Point_2* q = boost::get<EK::Point_2>(&*x)) hits.push_back(*q);
+    std::sort(hits.begin(), hits.end());
+    all.emplace_back(hits.front(), hits.back());
+  }
+  CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<EK>> oracle;
+  CGAL::insert(oracle, all.begin(), all.end());
+  CHECK(p.number_of_cells() == oracle.number_of_faces() - 1);
+  // kinetic partitions without crossings have fewer cells
+  CHECK(CGAL::kinetic_partition_2(s).number_of_cells() < p.number_of_cells());
+  // one crossing allowed: in between
+  const std::size_t one = CGAL::kinetic_partition_2(s, PPS::parameters::maximum_number_of_crossings(std::size_t(1))).number_of_cells();
+  CHECK(one >= CGAL::kinetic_partition_2(s).number_of_cells() && one <= p.number_of_cells());
+  // the crossing distance makes more connections
+  CHECK(CGAL::kinetic_partition_2(s, PPS::parameters::crossing_distance(5.)).number_of_cells() >=
+        CGAL::kinetic_partition_2(s).number_of_cells());
+}
+
+// Cells tile the bounding rectangle; the partition follows rigid motions and scalings.
+void test_cells_and_invariance()
+{
+  const auto s = random_segments(60, 3);
+  Partition p = CGAL::kinetic_partition_2(s);
+  CHECK(p.is_valid());
+  // the area of the rectangle = the sum of the cell areas
+  double box_area = 0;
+  {
+    std::vector<K::Point_2> corners;
+    for(const auto& v : p.vertices()) {
+      std::size_t fixed = 0;
+      for(auto l : v.lines) fixed += p.lines()[l].is_fixed ? 1 : 0;
+      if(fixed == 2) corners.push_back(p.point(std::size_t(&v - p.vertices().data())));
+    }
+    CHECK(corners.size() == 4);
+    std::vector<K::Point_2> hull;
+    CGAL::convex_hull_2(corners.begin(), corners.end(), std::back_inserter(hull));
+    box_area = CGAL::to_double(CGAL::Polygon_2<K>(hull.begin(), hull.end()).area());
+  }
+  CHECK(std::abs(total_area(p) - box_area) < 1e-6 * box_area);
+  // exact transformations: rotation by 90 degrees, integer translation, scaling by 4
+  std::vector<K::Segment_2> moved;
+  for(const auto& seg : s) {
+    auto f = [](const K::Point_2& q) { return K::Point_2(-4 * q.y() + 1024, 4 * q.x() - 512); };
+    moved.emplace_back(f(seg.source()), f(seg.target()));
+  }
+  Partition q = CGAL::kinetic_partition_2(moved);
+  CHECK(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
+        q.number_of_edges() == p.number_of_edges() && q.number_of_cells() == p.number_of_cells());
+}
+
+void test_builders()
+{
+  // two squares sharing an edge: 5 lines (collinear edges share one), 6 points, 7 edges, 2 cells
+  std::vector<CGAL::Polygon_2<K>> squares(2);
+  for(double x : {0., 1.}) {
+    auto& sq = squares[std::size_t(x)];
+    sq.push_back(K::Point_2(x, 0)); sq.push_back(K::Point_2(x + 1, 0));
+    sq.push_back(K::Point_2(x + 1, 1)); sq.push_back(K::Point_2(x, 1));
+  }
+  Partition p = PPS::line_partition_from_polygons_2(squares);
+  CHECK(p.is_valid());
+  CHECK(p.number_of_lines() == 5 && p.number_of_vertices() == 6 && p.number_of_edges() == 7 && p.number_of_cells() == 2);
+  // the same from a CGAL arrangement, with a dangling edge that is dropped
+  CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<EK>> arrangement;
+  std::vector<EK::Segment_2> segments{{EK::Point_2(0, 0), EK::Point_2(2, 0)}, {EK::Point_2(2, 0), EK::Point_2(2, 1)},
+                                      {EK::Point_2(2, 1), EK::Point_2(0, 1)}, {EK::Point_2(0, 1), EK::Point_2(0, 0)},
+                                      {EK::Point_2(1, 0), EK::Point_2(1, 1)}, {EK::Point_2(2, 1), EK::Point_2(3, 2)}};
+  CGAL::insert(arrangement, segments.begin(), segments.end());
+  Partition a = PPS::line_partition_from_arrangement_2<K>(arrangement);
+  CHECK(a.is_valid() && a.number_of_lines() == 5 && a.number_of_edges() == 7 && a.number_of_cells() == 2);
+  // GeoJSON: one feature per cell, closed rings
+  std::vector<Partition::Polygon_with_holes_2> cells;
+  a.cells(std::back_inserter(cells));
+  std::ostringstream os;
+  CHECK(PPS::IO::write_GeoJSON(os, cells));
+  const std::string text = os.str();
+  std::size_t features = 0;
+  for(std::size_t at = text.find("\"Feature\""); at != std::string::npos; at = text.find("\"Feature\"", at + 1)) ++features;
+  CHECK(features == 2);
+}
+
+template <class F>
+void expect_error(PPS::Input_error_code code, F f)
+{
+  try { f(); } catch(const PPS::Input_error& e) { CHECK(e.code() == code); return; }
+  CHECK(!"no error");
+}
+
+void test_bad_input()
+{
+  using C = PPS::Input_error_code;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  expect_error(C::EMPTY_INPUT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{}); });
+  expect_error(C::NON_FINITE_COORDINATE, [&] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {nan, 1}}}); });
+  expect_error(C::ZERO_LENGTH_SEGMENT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}, {{2, 2}, {2, 2}}}); });
+  expect_error(C::DUPLICATED_SEGMENT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}, {{1, 1}, {0, 0}}}); });
+  expect_error(C::INVALID_PARAMETER, [] {
+    CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}}, PPS::parameters::crossing_distance(-1.));
+  });
+  expect_error(C::EMPTY_INPUT, [] { PPS::line_partition_from_polygons_2(std::vector<CGAL::Polygon_2<K>>{}); });
+  expect_error(C::NO_CELL, [] {
+    std::vector<CGAL::Polygon_2<K>> flat(1);
+    flat[0].push_back(K::Point_2(0, 0)); flat[0].push_back(K::Point_2(1, 0));
+    PPS::line_partition_from_polygons_2(flat);
+  });
+}
+
+int main()
+{
+  test_simple_configurations();
+  for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(seed);
+  test_against_line_arrangement();
+  test_cells_and_invariance();
+  test_builders();
+  test_bad_input();
+  std::cout << "test_line_partition: all checks passed" << std::endl;
+  return 0;
+}

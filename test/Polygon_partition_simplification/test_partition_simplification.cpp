@@ -1,0 +1,276 @@
+// Simplification in line space: the analytic gradient against finite differences, synthetic
+// building footprints (complexity drops, orthogonality appears, cells stay near the truth),
+// the roles of lambda1 and lambda2, invariance under exact similarities, validity under
+// randomized stress, the symmetric 360-gon, bad parameters.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/kinetic_partition_2.h>
+#include <CGAL/simplify_polygon_partition_2.h>
+
+#include "synthetic_footprints.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <random>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+namespace PPS = CGAL::Polygon_partition_simplification;
+using Partition = PPS::Line_partition_2<K>;
+using Stats = PPS::Simplification_statistics;
+
+#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
+
+std::vector<K::Segment_2> to_segments(const std::vector<synthetic::Segment>& s)
+{
+  std::vector<K::Segment_2> result;
+  for(const auto& x : s) result.emplace_back(K::Point_2(x[0], x[1]), K::Point_2(x[2], x[3]));
+  return result;
+}
+
+std::ostream& operator<<(std::ostream& os, const Stats& s)
+{
+  return os << "lines " << s.lines_before << "->" << s.lines_after << " points " << s.points_before << "->"
+            << s.points_after << " cells " << s.cells_before << "->" << s.cells_after << " orthogonal "
+            << s.orthogonal_pairs_before << "->" << s.orthogonal_pairs_after << " (" << s.rounds << " rounds, "
+            << s.iterations << " steps, " << s.rejected_rounds << " redone)";
+}
+
+// dE/dL against centered finite differences, on a configuration with no term at a kink;
+// and the Riemannian gradient against its definition <grad, v>_M = dE(v) for tangent v.
+void test_gradient()
+{
+  namespace I = PPS::internal;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto footprints = synthetic::make_footprints(2, 0.05, 11);
+  Partition p = CGAL::kinetic_partition_2(to_segments(footprints.segments));
+  I::Working_partition w;
+  for(const auto& l : p.lines()) {
+    I::Line_state s;
+    s.metric = l.metric;
+    s.number_of_segments = l.number_of_segments;
+    // perturbed lines, so that terms are not at their kinks
+    s.coefficients = I::normalized_line({l.coefficients[0] + 0.01 * u(rng), l.coefficients[1] + 0.01 * u(rng),
+                                         l.coefficients[2] + 0.01 * u(rng)});
+    w.lines.push_back(s);
+  }
+  for(const auto& v : p.vertices()) w.vertex_lines.emplace_back(v.lines.begin(), v.lines.end());
+  for(const auto& e : p.edges()) w.edges.push_back({I::Index(e.line), I::Index(e.source), I::Index(e.target)});
+  const I::Energy_terms terms = I::energy_terms(w);
+  CHECK(!terms.triplets.empty() && !terms.pairs.empty());
+  I::Energy_weights weights;
+  weights.concurrency_weight = 0.3;
+  weights.orthogonality_weight = 0.2;
+  weights.collapse_distance = 0.05;
+  weights.sin_maximum_angle = std::sin(0.3);
+  weights.minimum_length = 0.02;
+  std::vector<I::Vector_3d> d;
+  I::derivative(w.lines, terms, weights, d);
+  const double h = 1e-7;
+  double worst = 0;
+  std::size_t active = 0;
+  for(const auto& t : terms.triplets)
+    active += std::abs(I::determinant(w.lines[t[0]].coefficients, w.lines[t[1]].coefficients,
+                                      w.lines[t[2]].coefficients)) < weights.collapse_distance;
+  CHECK(active > 0); // the concurrency term is tested, not only its constant part
+  for(std::size_t i = 0; i < w.lines.size(); ++i)
+    for(int c = 0; c < 3; ++c) {
+      auto plus = w.lines, minus = w.lines;
+      plus[i].coefficients[c] += h;
+      minus[i].coefficients[c] -= h;
+      const double fd = (I::energy(plus, terms, weights) - I::energy(minus, terms, weights)) / (2 * h);
+      worst = std::max(worst, std::abs(fd - d[i][c]) / std::max(1., std::abs(d[i][c])));
+    }
+  CHECK(worst < 1e-5);
+  // the per-line derivative of the descent is the same
+  const I::Line_incidence incidence(w.lines, terms);
+  for(std::size_t i = 0; i < w.lines.size(); ++i) {
+    const I::Vector_3d di = I::line_derivative(w.lines, terms, incidence, weights, i);
+    for(int c = 0; c < 3; ++c) CHECK(std::abs(di[c] - d[i][c]) < 1e-12 * (1 + std::abs(d[i][c])));
+  }
+  for(std::size_t i = 0; i < w.lines.size(); ++i) {
+    const auto& L = w.lines[i].coefficients;
+    const I::Vector_3d g = I::riemannian_gradient(w.lines[i], weights, d[i]);
+    CHECK(std::abs(g[0] * L[0] + g[1] * L[1]) < 1e-9 * (1 + std::abs(g[0]) + std::abs(g[1]))); // tangent
+    for(const I::Vector_3d v : {I::Vector_3d{-L[1], L[0], 0}, I::Vector_3d{0, 0, 1}}) {
+      double metric = 0;
+      for(int r = 0; r < 3; ++r)
+        for(int c = 0; c < 3; ++c) metric += g[r] * I::metric_entry(w.lines[i], weights, r, c) * v[c];
+      CHECK(std::abs(metric - I::dot(d[i], v)) < 1e-8 * (1 + std::abs(metric)));
+    }
+  }
+}
+
+// distances from samples of the true footprint boundaries to the nearest edge of the
+// partition, sorted
+std::vector<double> footprint_distances(const synthetic::Footprints& f, const Partition& p)
+{
+  std::vector<double> result;
+  for(const auto& polygon : f.polygons)
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+      for(int k = 0; k < 10; ++k) {
+        const auto& a = polygon[i];
+        const auto& b = polygon[(i + 1) % polygon.size()];
+        const K::Point_2 q(a[0] + (b[0] - a[0]) * k / 10., a[1] + (b[1] - a[1]) * k / 10.);
+        double best = 1e300;
+        for(std::size_t e = 0; e < p.number_of_edges(); ++e)
+          best = std::min(best, std::sqrt(CGAL::to_double(CGAL::squared_distance(q, p.segment(e)))));
+        result.push_back(best);
+      }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+Stats simplify(Partition& p, double lambda1, double lambda2)
+{
+  return CGAL::simplify_polygon_partition_2(
+    p, PPS::parameters::concurrency_weight(lambda1, PPS::parameters::orthogonality_weight(lambda2)));
+}
+
+void test_footprints()
+{
+  for(unsigned seed : {1u, 2u}) {
+    const auto f = synthetic::make_footprints(5, 0.05, seed); // rectilinear and not
+    Partition p = CGAL::kinetic_partition_2(to_segments(f.segments));
+    const std::vector<double> before = footprint_distances(f, p);
+    std::size_t rounds_seen = 0;
+    const Stats s = CGAL::simplify_polygon_partition_2(
+      p, PPS::parameters::callback(std::function<bool(const Partition&, const Stats&)>(
+           [&](const Partition& q, const Stats&) { CHECK(q.is_valid()); ++rounds_seen; return true; })));
+    std::cout << "footprints (seed " << seed << "): " << s << std::endl;
+    CHECK(p.is_valid());
+    CHECK(rounds_seen == s.rounds);
+    CHECK(s.lines_after < s.lines_before && s.cells_after < s.cells_before && s.points_after < s.points_before);
+    CHECK(s.orthogonal_pairs_after > s.orthogonal_pairs_before);
+    CHECK(s.line_merges > 0 && s.point_merges > 0);
+    // the walls stay where they were: 95% of the true boundary within 0.5 m of an edge
+    // (noise 5 cm, buildings of 20 m; a short wall may be merged away)
+    const std::vector<double> after = footprint_distances(f, p);
+    const std::size_t q95 = after.size() * 95 / 100;
+    std::cout << "  distance from the true footprints, 95% / max: " << before[q95] << " / " << before.back()
+              << " -> " << after[q95] << " / " << after.back() << std::endl;
+    CHECK(after[q95] < 0.5);
+  }
+}
+
+// Fig. 3.8: lambda1 controls complexity, lambda2 orthogonality.
+void test_parameters()
+{
+  const auto f = synthetic::make_footprints(5, 0.05, 3);
+  const auto segments = to_segments(f.segments);
+  Partition a = CGAL::kinetic_partition_2(segments), b = a, c = a, d = a;
+  const Stats low = simplify(a, 0.0002, 0.0005), high = simplify(b, 0.005, 0.0005);
+  std::cout << "lambda1 0.0002: " << low << "\nlambda1 0.005:  " << high << std::endl;
+  CHECK(high.lines_after < low.lines_after);
+  const Stats none = simplify(c, 0.005, 0), strong = simplify(d, 0.005, 0.005);
+  std::cout << "lambda2 0:     " << none << "\nlambda2 0.005: " << strong << std::endl;
+  CHECK(strong.orthogonal_pairs_after > none.orthogonal_pairs_after);
+}
+
+// Exact similarities (rotation by 90 degrees, translation, scaling by 4, lengths scaled too)
+// give the same simplification.
+void test_invariance()
+{
+  const auto f = synthetic::make_footprints(4, 0.05, 4);
+  const auto segments = to_segments(f.segments);
+  std::vector<K::Segment_2> moved;
+  auto move = [](const K::Point_2& q) { return K::Point_2(-4 * q.y() + 4096, 4 * q.x() - 2048); };
+  for(const auto& s : segments) moved.emplace_back(move(s.source()), move(s.target()));
+  Partition p = CGAL::kinetic_partition_2(segments), q = CGAL::kinetic_partition_2(moved);
+  const Stats a = simplify(p, 0.005, 0.0005), b = simplify(q, 0.005, 0.0005);
+  CHECK(a.lines_after == b.lines_after && a.points_after == b.points_after && a.cells_after == b.cells_after &&
+        a.orthogonal_pairs_after == b.orthogonal_pairs_after);
+  // the same points (numbered differently: lines are numbered by their equations)
+  std::vector<K::Point_2> x, y;
+  for(std::size_t v = 0; v < p.number_of_vertices(); ++v) { x.push_back(move(p.point(v))); y.push_back(q.point(v)); }
+  for(const K::Point_2& a : x) {
+    double best = 1e300;
+    for(const K::Point_2& b : y) best = std::min(best, std::abs(a.x() - b.x()) + std::abs(a.y() - b.y()));
+    CHECK(best < 1e-6 * 4096);
+  }
+}
+
+// Random segments and random parameters: the result is always a valid partition.
+void test_stress()
+{
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  for(int run = 0; run < 12; ++run) {
+    std::vector<K::Segment_2> s;
+    const int n = 20 + int(rng() % 80);
+    while(int(s.size()) < n) {
+      const double x = 100 * u(rng), y = 100 * u(rng), a = 6.3 * u(rng), l = 1 + 15 * u(rng);
+      s.emplace_back(K::Point_2(x, y), K::Point_2(x + l * std::cos(a), y + l * std::sin(a)));
+    }
+    Partition p = CGAL::kinetic_partition_2(s);
+    const Stats st = CGAL::simplify_polygon_partition_2(
+      p, PPS::parameters::concurrency_weight(0.02 * u(rng), PPS::parameters::orthogonality_weight(0.005 * u(rng),
+         PPS::parameters::collapse_distance(1 + 6 * u(rng), PPS::parameters::maximum_angle(20 * u(rng))))));
+    CHECK(p.is_valid());
+    CHECK(st.lines_after <= st.lines_before);
+  }
+}
+
+// Section 3.3.1: a regular 360-gon; the simplification ends, breaks the symmetry, and does so
+// the same way every time.
+void test_360_gon()
+{
+  std::vector<K::Segment_2> s;
+  const double pi = 3.14159265358979323846;
+  for(int i = 0; i < 360; ++i) {
+    const double a = 2 * pi * i / 360, b = 2 * pi * (i + 1) / 360;
+    s.emplace_back(K::Point_2(100 * std::cos(a), 100 * std::sin(a)), K::Point_2(100 * std::cos(b), 100 * std::sin(b)));
+  }
+  Partition p = CGAL::kinetic_partition_2(s), q = p;
+  const auto run = [](Partition& x) {
+    return CGAL::simplify_polygon_partition_2(
+      x, PPS::parameters::concurrency_weight(0.05, PPS::parameters::collapse_distance(10.,
+         PPS::parameters::initial_step(0.01, PPS::parameters::minimum_length(1.)))));
+  };
+  const Stats a = run(p), b = run(q);
+  std::cout << "360-gon: " << a << std::endl;
+  CHECK(p.is_valid());
+  CHECK(a.lines_after < a.lines_before / 4); // adjacent edges at 1 degree merge...
+  CHECK(a.lines_after > 4 + 3 && a.cells_after == 2); // ...into a polygon that stays
+  CHECK(a.lines_after == b.lines_after && a.cells_after == b.cells_after);
+  for(std::size_t v = 0; v < p.number_of_vertices(); ++v) CHECK(p.point(v) == q.point(v));
+}
+
+template <class F>
+void expect_error(PPS::Input_error_code code, F f)
+{
+  try { f(); } catch(const PPS::Input_error& e) { CHECK(e.code() == code); return; }
+  CHECK(!"no error");
+}
+
+void test_bad_parameters()
+{
+  const auto f = synthetic::make_footprints(1, 0.05, 1);
+  Partition p = CGAL::kinetic_partition_2(to_segments(f.segments));
+  const Partition copy = p;
+  using C = PPS::Input_error_code;
+  expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::concurrency_weight(-1.)); });
+  expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::step_ratio(1.)); });
+  expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::maximum_angle(120.)); });
+  CHECK(p.number_of_lines() == copy.number_of_lines() && p.number_of_edges() == copy.number_of_edges());
+  // a callback that stops at once leaves a valid partition
+  const Stats s = CGAL::simplify_polygon_partition_2(
+    p, PPS::parameters::callback(std::function<bool(const Partition&, const Stats&)>(
+         [](const Partition&, const Stats&) { return false; })));
+  CHECK(s.rounds == 1 && p.is_valid());
+}
+
+int main()
+{
+  test_gradient();
+  test_footprints();
+  test_parameters();
+  test_invariance();
+  test_stress();
+  test_360_gon();
+  test_bad_parameters();
+  std::cout << "test_partition_simplification: all checks passed" << std::endl;
+  return 0;
+}
