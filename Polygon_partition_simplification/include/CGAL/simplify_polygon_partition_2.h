@@ -42,7 +42,7 @@ struct Simplification_statistics
   std::size_t point_merges = 0;   ///< reductions (b1): two points merged (an edge collapsed)
   std::size_t removed_points = 0; ///< points left on a single line, or dangling, removed
   std::size_t far_points = 0;     ///< triplets below the threshold with a point outside the disk (b2)
-  std::size_t rejected_rounds = 0; ///< rounds undone because they made the partition invalid
+  std::size_t rejected_rounds = 0; ///< reductions redone because they left the partition invalid (with some lines put back)
   double energy_before = 0;       ///< energy of the input partition
   double energy_after = 0;        ///< energy of the result
   double seconds = 0;             ///< running time
@@ -68,8 +68,10 @@ cylinder \f$a^2 + b^2 = 1\f$ with the Riemannian gradient of Eq. 3.13 and steps
 \f$\alpha_k = \alpha_0 r^k\f$ down to \f$\alpha_{min}\f$. A reduction is decided when
 \f$|\det(L_i, L_j, L_k)| < \eta = d_P d_L^2 / (5 (1 + R^2))\f$ (Eq. 3.15, \f$R = 1\f$ in the
 normalized frame of the partition). After every round the partition is checked with exact
-predicates (`Line_partition_2::defect()`); a round that would make it invalid is undone and
-the simplification stops there, so the result is always a valid partition.
+predicates (`Line_partition_2::defect()`); when it is not valid, the lines of the defective
+edges (and the lines through their ends) get back the coordinates they had before the descent
+and may not merge, and the reductions are redone, until the partition is valid (at worst it
+is the partition before the round). The result is always a valid partition.
 
 Lengths are in input units and converted to the normalized frame of the partition (where
 the half-diagonal of its enclosing rectangle is 1); the weights \f$\lambda_1\f$ and
@@ -263,40 +265,46 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   stats.orthogonal_pairs_before = partition.number_of_orthogonal_pairs();
   stats.energy_before = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights);
 
-  // Algorithm 1. A round (descent + reductions) that makes the partition invalid is redone
-  // from the partition before it, with the lines of the defective edges kept still, until it
-  // gives a valid partition; if it cannot, the simplification stops at the last valid one.
+  // Algorithm 1. A round is a descent followed by reductions. When the reductions leave an
+  // invalid partition, the lines of the defective edges (and of the points at their ends) get
+  // back the coordinates they had before the descent, and the reductions are redone, until
+  // the partition is valid (at worst, every line back where it was: the partition before the
+  // round, which is valid).
   bool finished = false;
   while(!finished) {
     const PPS::internal::Working_partition start = w;
+    std::vector<PPS::internal::Vector_3d> moved;
+    {
+      const PPS::internal::Energy_terms terms = PPS::internal::energy_terms(w);
+      const PPS::internal::Line_incidence incidence(w.lines, terms);
+      for(double alpha = alpha0; alpha > alpha_min && stats.iterations < max_iterations; alpha *= ratio) {
+        if(!PPS::internal::gradient_step(w.lines, terms, incidence, weights, alpha)) break;
+        ++stats.iterations;
+      }
+      for(const auto& l : w.lines) moved.push_back(l.coefficients);
+    }
     std::vector<bool> frozen(start.lines.size(), false);
     PPS::internal::Reduction_counts counts;
     for(;;) {
       w = start;
+      const std::vector<signed char> orientations = PPS::internal::Partition_reducer::edge_orientations(w);
       for(PPS::internal::Index l = 0; l < w.lines.size(); ++l) {
         w.lines[l].members.assign(1, l);
         w.lines[l].is_frozen = frozen[l];
-      }
-      const PPS::internal::Energy_terms terms = PPS::internal::energy_terms(w);
-      const PPS::internal::Line_incidence incidence(w.lines, terms);
-      const std::vector<signed char> orientations = PPS::internal::Partition_reducer::edge_orientations(w);
-      std::size_t iterations = stats.iterations;
-      for(double alpha = alpha0; alpha > alpha_min && iterations < max_iterations; alpha *= ratio) {
-        if(!PPS::internal::gradient_step(w.lines, terms, incidence, weights, alpha)) break;
-        ++iterations;
+        if(!frozen[l]) w.lines[l].coefficients = moved[l];
       }
       PPS::internal::Partition_reducer reducer(w, thresholds);
       counts = reducer.run(orientations);
       const std::vector<std::size_t> defective = to_partition(w).defective_edges();
-      if(defective.empty() && reducer.conflicts().empty()) { stats.iterations = iterations; break; }
+      if(defective.empty() && reducer.conflicts().empty()) break;
       ++stats.rejected_rounds;
       bool progress = false;
-      for(PPS::internal::Index l : reducer.conflicts())
-        if(!frozen[l]) { frozen[l] = true; progress = true; }
       auto freeze = [&](PPS::internal::Index line) {
         for(PPS::internal::Index l : w.lines[line].members)
-          if(!frozen[l]) { frozen[l] = true; progress = true; }
+          if(!frozen[l] && !start.lines[l].is_fixed) { frozen[l] = true; progress = true; }
       };
+      for(PPS::internal::Index l : reducer.conflicts())
+        if(!frozen[l] && !start.lines[l].is_fixed) { frozen[l] = true; progress = true; }
       for(std::size_t e : defective) { // the edge's line and the lines through its ends
         freeze(w.edges[e][0]);
         for(int end = 1; end <= 2; ++end)

@@ -21,8 +21,7 @@ enum class Input_error_code
   ZERO_LENGTH_SEGMENT,    ///< a segment whose two endpoints are equal
   DUPLICATED_SEGMENT,     ///< the same segment given twice (in either orientation)
   NO_CELL,                ///< the input bounds no cell (all its edges dangle)
-  INVALID_PARAMETER,      ///< a parameter is out of its range (negative weight, step ratio not in (0,1), ...)
-  CANCELLED               ///< the callback asked to stop
+  INVALID_PARAMETER       ///< a parameter is out of its range (negative weight, step ratio not in (0,1), ...)
 };
 
 /*!

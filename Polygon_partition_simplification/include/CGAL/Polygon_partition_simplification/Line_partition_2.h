@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -133,6 +134,7 @@ public:
 
   /// \name Creation
   /// @{
+
   /// an empty partition
   Line_partition_2() = default;
 
@@ -146,6 +148,7 @@ public:
 
   /// \name Access
   /// @{
+
   /// the similarity to the normalized frame
   const Frame& frame() const { return frame_; }
   /// the lines
@@ -233,74 +236,18 @@ public:
   the computed coordinates; every edge separates two different cells; the boundary of
   every cell is made of simple polygons.
   */
-  std::string defect() const
-  {
-    for(std::size_t v = 0; v < vertices_.size(); ++v) {
-      const auto& l = vertices_[v].lines;
-      if(l.size() < 2) return "point " + std::to_string(v) + " has fewer than two lines";
-      for(std::size_t i = 0; i < l.size(); ++i)
-        if(l[i] >= lines_.size() || (i > 0 && l[i - 1] >= l[i]))
-          return "point " + std::to_string(v) + " has invalid line indices";
-      const std::array<double, 2> p = normalized_point(v);
-      if(!std::isfinite(p[0]) || !std::isfinite(p[1]))
-        return "point " + std::to_string(v) + " is at infinity";
-    }
-    std::vector<std::pair<std::array<double, 2>, std::size_t>> sorted;
-    for(std::size_t v = 0; v < vertices_.size(); ++v) sorted.emplace_back(normalized_point(v), v);
-    std::sort(sorted.begin(), sorted.end());
-    for(std::size_t i = 1; i < sorted.size(); ++i)
-      if(sorted[i].first == sorted[i - 1].first)
-        return "points " + std::to_string(sorted[i - 1].second) + " and " +
-               std::to_string(sorted[i].second) + " coincide";
-    std::vector<bool> used(vertices_.size(), false);
-    for(std::size_t e = 0; e < edges_.size(); ++e) {
-      const Edge& edge = edges_[e];
-      if(edge.source == edge.target || edge.source >= vertices_.size() ||
-         edge.target >= vertices_.size())
-        return "edge " + std::to_string(e) + " does not join two points";
-      for(std::size_t v : {edge.source, edge.target}) {
-        const auto& l = vertices_[v].lines;
-        if(!std::binary_search(l.begin(), l.end(), edge.line))
-          return "edge " + std::to_string(e) + " ends at a point off its line";
-        used[v] = true;
-      }
-    }
-    const std::string crossing = crossing_edges();
-    if(!crossing.empty()) return crossing;
-    const std::size_t used_vertices = std::size_t(std::count(used.begin(), used.end(), true));
-    const Exact_arrangement_2 arrangement = exact_arrangement();
-    if(arrangement.number_of_edges() != edges_.size() ||
-       arrangement.number_of_vertices() != used_vertices)
-      return "edges cross, overlap or pass through a point";
-    for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
-      if(h->face() == h->twin()->face()) return "an edge dangles or bridges inside a cell";
-    for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
-      std::vector<typename Exact_arrangement_2::Halfedge_const_handle> ccbs;
-      if(!f->is_unbounded()) ccbs.push_back(f->outer_ccb());
-      for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
-      for(auto start : ccbs) {
-        std::vector<const void*> seen;
-        auto h = start;
-        do { seen.push_back(&*h->target()); h = h->next(); } while(h != start);
-        std::sort(seen.begin(), seen.end());
-        if(std::adjacent_find(seen.begin(), seen.end()) != seen.end())
-          return "a cell boundary is not a simple polygon";
-      }
-    }
-    return std::string();
-  }
+  std::string defect() const { return analyze(nullptr); }
 
   /// `defect().empty()`
   bool is_valid() const { return defect().empty(); }
 
-  /// the edges involved in a defect: those that cross, overlap or pass through a point; all
-  /// edges if the partition has another defect; none if it is valid
+  /// the edges involved in the defects of the partition (sorted): edges that cross, overlap or
+  /// pass through a point, edges at a point at infinity or at coinciding points, edges that
+  /// bridge a cell or pinch its boundary; none if the partition is valid
   std::vector<std::size_t> defective_edges() const
   {
     std::vector<std::size_t> result;
-    for(const auto& [e, f] : crossing_pairs(true)) { result.push_back(e); result.push_back(f); }
-    if(result.empty() && !is_valid())
-      for(std::size_t e = 0; e < edges_.size(); ++e) result.push_back(e);
+    analyze(&result);
     std::sort(result.begin(), result.end());
     result.erase(std::unique(result.begin(), result.end()), result.end());
     return result;
@@ -345,6 +292,101 @@ public:
   /// @}
 
 private:
+  // The first defect (empty if none); with `defective`, collects the edges of all defects.
+  std::string analyze(std::vector<std::size_t>* defective) const
+  {
+    std::string first;
+    auto report = [&](const std::string& what) { if(first.empty()) first = what; return defective == nullptr; };
+    auto all_edges = [&] { if(defective) for(std::size_t e = 0; e < edges_.size(); ++e) defective->push_back(e); };
+    std::vector<std::vector<std::size_t>> incident(vertices_.size());
+    for(std::size_t e = 0; e < edges_.size(); ++e) {
+      const Edge& edge = edges_[e];
+      if(edge.source == edge.target || edge.source >= vertices_.size() || edge.target >= vertices_.size()) {
+        all_edges();
+        return "edge " + std::to_string(e) + " does not join two points";
+      }
+      incident[edge.source].push_back(e);
+      incident[edge.target].push_back(e);
+    }
+    auto mark = [&](std::size_t v) { if(defective) defective->insert(defective->end(), incident[v].begin(), incident[v].end()); };
+    std::vector<std::array<double, 2>> points(vertices_.size());
+    for(std::size_t v = 0; v < vertices_.size(); ++v) {
+      const auto& l = vertices_[v].lines;
+      for(std::size_t i = 0; i < l.size(); ++i)
+        if(l[i] >= lines_.size() || (i > 0 && l[i - 1] >= l[i])) {
+          all_edges();
+          return "point " + std::to_string(v) + " has invalid line indices";
+        }
+      if(l.size() < 2) { mark(v); if(report("point " + std::to_string(v) + " has fewer than two lines")) return first; continue; }
+      points[v] = normalized_point(v);
+      if(!std::isfinite(points[v][0]) || !std::isfinite(points[v][1])) {
+        mark(v);
+        if(report("point " + std::to_string(v) + " is at infinity")) return first;
+      }
+    }
+    for(std::size_t e = 0; e < edges_.size(); ++e)
+      for(std::size_t v : {edges_[e].source, edges_[e].target}) {
+        const auto& l = vertices_[v].lines;
+        if(!std::binary_search(l.begin(), l.end(), edges_[e].line)) {
+          all_edges();
+          return "edge " + std::to_string(e) + " ends at a point off its line";
+        }
+      }
+    if(!first.empty()) return first; // no geometry with points at infinity
+    std::vector<std::pair<std::array<double, 2>, std::size_t>> sorted;
+    for(std::size_t v = 0; v < vertices_.size(); ++v) sorted.emplace_back(points[v], v);
+    std::sort(sorted.begin(), sorted.end());
+    for(std::size_t i = 1; i < sorted.size(); ++i)
+      if(sorted[i].first == sorted[i - 1].first) {
+        mark(sorted[i].second);
+        mark(sorted[i - 1].second);
+        if(report("points " + std::to_string(sorted[i - 1].second) + " and " +
+                  std::to_string(sorted[i].second) + " coincide")) return first;
+      }
+    if(!first.empty()) return first; // the arrangement would merge coinciding points
+    const auto crossings = crossing_pairs(defective != nullptr);
+    if(!crossings.empty()) {
+      for(const auto& [e, f] : crossings) if(defective) { defective->push_back(e); defective->push_back(f); }
+      return "edges " + std::to_string(crossings[0].first) + " and " + std::to_string(crossings[0].second) +
+             " cross, overlap or pass through a point";
+    }
+    // no crossing: the arrangement has exactly the points and edges of the partition
+    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+    const Exact_arrangement_2 arrangement = exact_arrangement();
+    std::map<typename EK::Point_2, std::size_t> vertex_of;
+    for(std::size_t v = 0; v < vertices_.size(); ++v)
+      if(!incident[v].empty()) vertex_of.emplace(typename EK::Point_2(points[v][0], points[v][1]), v);
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_of;
+    for(std::size_t e = 0; e < edges_.size(); ++e)
+      edge_of[std::minmax(edges_[e].source, edges_[e].target)] = e;
+    auto edge_at = [&](typename Exact_arrangement_2::Halfedge_const_handle h) {
+      const std::size_t u = vertex_of.at(h->source()->point()), v = vertex_of.at(h->target()->point());
+      return edge_of.at(std::minmax(u, v));
+    };
+    for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
+      if(h->face() == h->twin()->face()) {
+        if(defective) defective->push_back(edge_at(h));
+        if(report("an edge dangles or bridges inside a cell")) return first;
+      }
+    for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
+      std::vector<typename Exact_arrangement_2::Halfedge_const_handle> ccbs;
+      if(!f->is_unbounded()) ccbs.push_back(f->outer_ccb());
+      for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
+      for(auto start : ccbs) {
+        std::vector<std::pair<const void*, typename Exact_arrangement_2::Halfedge_const_handle>> seen;
+        auto h = start;
+        do { seen.emplace_back(&*h->target(), h); h = h->next(); } while(h != start);
+        std::sort(seen.begin(), seen.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+        for(std::size_t i = 1; i < seen.size(); ++i)
+          if(seen[i].first == seen[i - 1].first) { // a pinched boundary: the edges at that point
+            if(defective) for(auto k : {i - 1, i}) { defective->push_back(edge_at(seen[k].second)); defective->push_back(edge_at(seen[k].second->next())); }
+            if(report("a cell boundary is not a simple polygon")) return first;
+          }
+      }
+    }
+    return first;
+  }
+
   // Pairs of edges that meet elsewhere than at a common endpoint (boxes of the edges
   // intersected with CGAL::box_intersection_d, then exact predicates); stops at the first
   // pair unless `all`.
@@ -382,14 +424,6 @@ private:
     };
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test);
     return result;
-  }
-
-  std::string crossing_edges() const
-  {
-    const auto pairs = crossing_pairs(false);
-    if(pairs.empty()) return std::string();
-    return "edges " + std::to_string(pairs[0].first) + " and " + std::to_string(pairs[0].second) +
-           " cross, overlap or pass through a point";
   }
 
   Frame frame_;

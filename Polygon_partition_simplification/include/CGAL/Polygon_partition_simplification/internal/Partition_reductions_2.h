@@ -126,8 +126,7 @@ public:
     auto line = [&](Index l) -> const Vector_3d& { return w_.lines[l].coefficients; };
     auto try_line_merge = [&](Index x, Index y) {
       if(w_.lines[x].is_still() || w_.lines[y].is_still()) return false;
-      if(line_distance(line(x), line(y)) >= t_.line_distance) return false;
-      return unite_lines(x, y);
+      return merge_close_classes(x, y, t_.line_distance);
     };
     {
       // A reversed edge shorter than the collapse distance went through its collapse; a longer
@@ -138,7 +137,7 @@ public:
         if(now[e] == orientations[e]) continue;
         const Index u = w_.edges[e][1], v = w_.edges[e][2];
         if(std::hypot(points[u][0] - points[v][0], points[u][1] - points[v][1]) < t_.collapse_length) {
-          if(unite_vertices(u, v)) ++counts_.point_merges;
+          if(merge_close_points(u, v, points, t_.collapse_length)) ++counts_.point_merges;
           continue;
         }
         send_to_infinity(smallest_angle(u) < smallest_angle(v) ? u : v);
@@ -156,7 +155,7 @@ public:
             ++counts_.line_merges; continue;
           }
           if(std::hypot(points[u][0] - points[v][0], points[u][1] - points[v][1]) < t_.point_distance) {
-            if(unite_vertices(u, v)) ++counts_.point_merges;
+            if(merge_close_points(u, v, points, t_.point_distance)) ++counts_.point_merges;
             continue;
           }
           // (b2): a point outside the disk of radius R = 1
@@ -185,7 +184,10 @@ public:
             const std::uint64_t key = (std::uint64_t(l[a]) << 32) | l[b];
             auto [it, inserted] = owner.emplace(key, v);
             if(inserted || find_vertex(it->second) == find_vertex(v)) continue;
-            if(try_line_merge(l[a], l[b])) { ++counts_.line_merges; changed = true; continue; }
+            if(!w_.lines[l[a]].is_still() && !w_.lines[l[b]].is_still() &&
+               line_distance(line(l[a]), line(l[b])) < t_.line_distance && unite_lines(l[a], l[b])) {
+              ++counts_.line_merges; changed = true; continue;
+            }
             const auto p = w_.point(it->second), q = w_.point(v);
             if(std::hypot(p[0] - q[0], p[1] - q[1]) < t_.collapse_length) {
               if(unite_vertices(it->second, v)) ++counts_.point_merges;
@@ -228,7 +230,7 @@ private:
       if(L[0] * M[0] + L[1] * M[1] < 0) M = {-M[0], -M[1], -M[2]};
       const double spread = std::hypot(L[0] - M[0], L[1] - M[1]) + std::abs(L[2] - M[2]);
       if(spread < t_.collapse_length) {
-        if(unite_lines(p, q)) ++counts_.line_merges;
+        if(merge_close_classes(p, q, 2 * t_.collapse_length)) ++counts_.line_merges;
         return;
       }
     }
@@ -252,6 +254,51 @@ private:
   Index find_line(Index x) { while(line_parent_[x] != x) x = line_parent_[x] = line_parent_[line_parent_[x]]; return x; }
   Index find_vertex(Index x) { while(vertex_parent_[x] != x) x = vertex_parent_[x] = vertex_parent_[vertex_parent_[x]]; return x; }
 
+  // Merges the classes of x and y if every line of one is within `bound` of every line of the
+  // other (complete linkage): chains of pairwise close lines, such as the sides of the
+  // 360-gon, do not merge all at once before the merged lines get their new coordinates.
+  bool merge_close_classes(Index x, Index y, double bound)
+  {
+    const Index rx = find_line(x), ry = find_line(y);
+    if(rx == ry) return false;
+    auto& cx = class_members_[rx];
+    auto& cy = class_members_[ry];
+    if(cx.empty()) cx.push_back(rx);
+    if(cy.empty()) cy.push_back(ry);
+    for(Index a : cx)
+      for(Index b : cy)
+        if(line_distance(w_.lines[a].coefficients, w_.lines[b].coefficients) >= bound) return false;
+    unite_lines(rx, ry);
+    const Index r = find_line(rx);
+    auto& target = class_members_[r];
+    auto& source = class_members_[r == rx ? ry : rx];
+    target.insert(target.end(), source.begin(), source.end());
+    source.clear();
+    return true;
+  }
+
+  // Merges the classes of points u and v if all their points are within `bound` of each other
+  // (complete linkage: a ring of short edges does not collapse into one point at once).
+  bool merge_close_points(Index u, Index v, const std::vector<std::array<double, 2>>& points, double bound)
+  {
+    const Index ru = find_vertex(u), rv = find_vertex(v);
+    if(ru == rv) return false;
+    auto& cu = vertex_members_[ru];
+    auto& cv = vertex_members_[rv];
+    if(cu.empty()) cu.push_back(ru);
+    if(cv.empty()) cv.push_back(rv);
+    for(Index a : cu)
+      for(Index b : cv)
+        if(!(std::hypot(points[a][0] - points[b][0], points[a][1] - points[b][1]) < bound)) return false;
+    unite_vertices(ru, rv);
+    const Index r = find_vertex(ru);
+    auto& target = vertex_members_[r];
+    auto& source = vertex_members_[r == ru ? rv : ru];
+    target.insert(target.end(), source.begin(), source.end());
+    source.clear();
+    return true;
+  }
+
   bool unite_lines(Index x, Index y)
   {
     x = find_line(x); y = find_line(y);
@@ -273,6 +320,8 @@ private:
   {
     line_parent_.resize(w_.lines.size());
     std::iota(line_parent_.begin(), line_parent_.end(), Index(0));
+    class_members_.assign(w_.lines.size(), {});
+    vertex_members_.assign(w_.vertex_lines.size(), {});
     vertex_parent_.resize(w_.vertex_lines.size());
     std::iota(vertex_parent_.begin(), vertex_parent_.end(), Index(0));
   }
@@ -389,21 +438,21 @@ private:
       // intervals with real points at both ends (edges to single-line points are dropped first
       // by extending through them: a single-line point joins the intervals of its edges)
       std::vector<std::pair<double, double>> intervals;
-      std::vector<std::vector<Index>> through(nv);
+      std::vector<std::pair<Index, Index>> through; // (single-line point, real point)
       for(const auto& [u, v] : line_edges[l]) {
         const bool ru = w_.vertex_lines[u].size() >= 2, rv = w_.vertex_lines[v].size() >= 2;
         if(ru && rv) {
           const double a = parameter(l, u), b = parameter(l, v);
           intervals.push_back({std::min(a, b), std::max(a, b)});
-        } else if(ru) through[v].push_back(u);
-        else if(rv) through[u].push_back(v);
+        } else if(ru) through.push_back({v, u});
+        else if(rv) through.push_back({u, v});
       }
-      for(Index x = 0; x < nv; ++x) // a single-line point between two real points
-        for(std::size_t i = 0; i < through[x].size(); ++i)
-          for(std::size_t j = i + 1; j < through[x].size(); ++j) {
-            const double a = parameter(l, through[x][i]), b = parameter(l, through[x][j]);
-            intervals.push_back({std::min(a, b), std::max(a, b)});
-          }
+      std::sort(through.begin(), through.end()); // a single-line point between two real points
+      for(std::size_t i = 0; i < through.size(); ++i)
+        for(std::size_t j = i + 1; j < through.size() && through[j].first == through[i].first; ++j) {
+          const double a = parameter(l, through[i].second), b = parameter(l, through[j].second);
+          intervals.push_back({std::min(a, b), std::max(a, b)});
+        }
       if(intervals.empty()) continue;
       std::sort(intervals.begin(), intervals.end());
       std::vector<std::pair<double, double>> unions{intervals[0]};
@@ -475,6 +524,8 @@ private:
   Reduction_counts counts_;
   std::vector<Index> line_parent_, vertex_parent_;
   std::vector<Index> conflicts_;
+  std::vector<std::vector<Index>> class_members_;  // lines of each class (at its root) in a pass
+  std::vector<std::vector<Index>> vertex_members_; // points of each class (at its root) in a pass
 
 public:
   // lines (indices at the start of the round) of pairs of distant points sharing two lines

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <map>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -211,16 +212,47 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
                       "the input bounds no cell: every edge dangles; give closed polygons or "
                       "segments that meet");
 
-  // Drop the lines no edge uses, renumbering the others in order.
+  // Drop the lines no edge uses and number the others by decreasing spread of their segment
+  // endpoints (which rigid motions and scalings do not change), then by their exact equation:
+  // the numbering, and the order of everything that follows it, depend neither on the order
+  // of the input nor on its position.
+  std::vector<std::size_t> used_lines;
+  {
+    std::vector<bool> used(lines.size(), false);
+    for(const auto& e : edges) used[e.line] = true;
+    for(std::size_t l = 0; l < lines.size(); ++l)
+      if(used[l]) used_lines.push_back(l);
+  }
+  auto spread = [&](std::size_t l) {
+    const Line_metric& m = lines[l].metric;
+    return m(2, 2) > 0 ? m(0, 0) + m(1, 1) - (m(0, 2) * m(0, 2) + m(1, 2) * m(1, 2)) / m(2, 2) : 0.;
+  };
+  std::stable_sort(used_lines.begin(), used_lines.end(),
+                   [&](std::size_t x, std::size_t y) { return spread(x) > spread(y); });
   std::vector<std::size_t> new_line(lines.size(), std::size_t(-1));
-  for(const auto& e : edges) new_line[e.line] = 0;
   std::vector<typename Partition::Line> kept;
-  for(std::size_t l = 0; l < lines.size(); ++l)
-    if(new_line[l] == 0) { new_line[l] = kept.size(); kept.push_back(lines[l]); }
+  for(std::size_t l : used_lines) { new_line[l] = kept.size(); kept.push_back(lines[l]); }
   for(auto& e : edges) e.line = new_line[e.line];
-  for(auto& v : vertices)
+  for(auto& v : vertices) {
     for(auto& l : v.lines) l = new_line[l];
-  return Partition(frame, std::move(kept), std::move(vertices), std::move(edges));
+    std::sort(v.lines.begin(), v.lines.end());
+  }
+  // points by their line sets, edges by (line, points)
+  std::vector<std::size_t> order(vertices.size());
+  for(std::size_t v = 0; v < order.size(); ++v) order[v] = v;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return vertices[x].lines < vertices[y].lines; });
+  std::vector<std::size_t> new_vertex(vertices.size());
+  std::vector<typename Partition::Vertex> sorted_vertices;
+  for(std::size_t v : order) { new_vertex[v] = sorted_vertices.size(); sorted_vertices.push_back(vertices[v]); }
+  for(auto& e : edges) {
+    e.source = new_vertex[e.source];
+    e.target = new_vertex[e.target];
+    if(e.source > e.target) std::swap(e.source, e.target);
+  }
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+    return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
+  });
+  return Partition(frame, std::move(kept), std::move(sorted_vertices), std::move(edges));
 }
 
 // The normalized frame of a set of points: center and half-diagonal of their smallest
