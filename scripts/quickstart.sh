@@ -2,7 +2,8 @@
 # Quick start of the two packages on a fresh Debian 12 machine.
 #   bash scripts/quickstart.sh run    install what is missing, build in Release, reconstruct
 #                                     kitten.xyz (closed) and b9_training.ply (open: aerial
-#                                     LiDAR), real scans from libcgal-demo
+#                                     LiDAR), real scans from libcgal-demo, and simplify the
+#                                     kinetic partition of 25 synthetic building footprints
 #   bash scripts/quickstart.sh test   same set-up, then build and run all tests with ctest
 set -euo pipefail
 mode="${1:-run}"
@@ -26,14 +27,18 @@ fi
 jobs="$(nproc 2>/dev/null || echo 2)"
 if [ "$mode" = run ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-  cmake --build build -j"$jobs" --target lex_reconstruct
+  cmake --build build -j"$jobs" --target lex_reconstruct simplify_partition
   mkdir -p results
   ./build/examples/Lex_optimal_chains/lex_reconstruct closed \
     build/cgal-data/data/points_3/kitten.xyz results/kitten_closed.off --json
   ./build/examples/Lex_optimal_chains/lex_reconstruct open \
     build/cgal-data/data/points_3/b9_training.ply results/b9_training_open.off --auto-boundary --json
+  ./build/examples/Polygon_partition_simplification/simplify_partition \
+    examples/Polygon_partition_simplification/data/footprints_25.txt results/footprints_25_simplified.geojson \
+    --svg results/footprints_25_simplified.svg --json
   echo "The reconstructed surfaces are in $(pwd)/results/: kitten_closed.off (closed surface)" \
-       "and b9_training_open.off (terrain bounded by its footprint)"
+       "and b9_training_open.off (terrain bounded by its footprint); the simplified partition of" \
+       "25 synthetic footprints: footprints_25_simplified.geojson (cells) and .svg (before/after)"
 else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON
   cmake --build build -j"$jobs"
