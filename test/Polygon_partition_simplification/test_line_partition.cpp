@@ -270,6 +270,12 @@ void test_bad_input()
   expect_error(C::INVALID_PARAMETER, [] {
     CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}}, PPS::parameters::crossing_distance(-1.));
   });
+  expect_error(C::INVALID_PARAMETER, [] {
+    CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}}, PPS::parameters::bounding_box_margin(1e-300));
+  });
+  // coordinates at the ends of the double range
+  expect_error(C::NON_FINITE_COORDINATE, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1e300, 1}}}); });
+  expect_error(C::ZERO_LENGTH_SEGMENT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1e-300, 0}}}); });
   expect_error(C::EMPTY_INPUT, [] { PPS::line_partition_from_polygons_2(std::vector<CGAL::Polygon_2<K>>{}); });
   expect_error(C::NO_CELL, [] {
     std::vector<CGAL::Polygon_2<K>> flat(1);

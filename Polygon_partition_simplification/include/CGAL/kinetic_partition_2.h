@@ -65,18 +65,21 @@ line is accumulated from the input segments on it (Eq. 3.5).
   \cgalParamNEnd
   \cgalParamNBegin{bounding_box_margin}
     \cgalParamDescription{margin added on each side of the enclosing rectangle, relative to its
-                          half-diagonal}
+                          half-diagonal, in [1e-6, 100]}
     \cgalParamType{`double`}
     \cgalParamDefault{0.05}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\return the partition, in line representation
+\return the partition, in line representation. Its points are computed in double precision
+from its lines: two exact intersection points closer than the precision of doubles (segments
+on nearly identical lines that cross) can get the same coordinates, and the partition is then
+not valid (`Line_partition_2::is_valid()` says so, and `simplify_polygon_partition_2()` refuses it).
 
 \throws Polygon_partition_simplification::Input_error when `segments` is empty
-(`EMPTY_INPUT`), has a NaN or infinite coordinate (`NON_FINITE_COORDINATE`), a segment of
-zero length (`ZERO_LENGTH_SEGMENT`) or twice the same segment (`DUPLICATED_SEGMENT`), or when
-a parameter is negative (`INVALID_PARAMETER`).
+(`EMPTY_INPUT`), has a NaN, infinite or huge coordinate (`NON_FINITE_COORDINATE`), a segment
+of zero length or shorter than 1e-100 (`ZERO_LENGTH_SEGMENT`) or twice the same segment
+(`DUPLICATED_SEGMENT`), or when a parameter is out of range (`INVALID_PARAMETER`).
 */
 template <class SegmentRange,
           class NamedParameters = parameters::Default_named_parameters>
@@ -102,10 +105,9 @@ kinetic_partition_2(const SegmentRange& segments,
     choose_parameter(get_parameter(np, PPS::internal_np::crossing_distance), 0.);
   const double margin =
     choose_parameter(get_parameter(np, PPS::internal_np::bounding_box_margin), 0.05);
-  if(!(crossing_distance >= 0) || !(margin > 0) || !std::isfinite(margin) ||
-     !std::isfinite(crossing_distance))
+  if(!(crossing_distance >= 0) || !(margin >= 1e-6 && margin <= 100) || !std::isfinite(crossing_distance))
     throw Input_error(Input_error_code::INVALID_PARAMETER,
-                      "crossing_distance must be >= 0 and bounding_box_margin > 0, both finite");
+                      "crossing_distance must be finite and >= 0, bounding_box_margin in [1e-6, 100]");
 
   // Checks: nothing is modified, an error says which segment is wrong.
   std::vector<std::array<double, 4>> input;
@@ -114,12 +116,16 @@ kinetic_partition_2(const SegmentRange& segments,
                                   CGAL::to_double(s.target().x()), CGAL::to_double(s.target().y())};
     const std::string which = "segment " + std::to_string(input.size());
     for(double x : c)
-      if(!std::isfinite(x))
+      if(!std::isfinite(x) || std::abs(x) > 1e100)
         throw Input_error(Input_error_code::NON_FINITE_COORDINATE,
-                          which + " has a NaN or infinite coordinate");
+                          which + " has a NaN, infinite or huge (beyond 1e100) coordinate");
     if(c[0] == c[2] && c[1] == c[3])
       throw Input_error(Input_error_code::ZERO_LENGTH_SEGMENT,
                         which + " has zero length; remove it");
+    const double dx = c[2] - c[0], dy = c[3] - c[1];
+    if(!(dx * dx + dy * dy >= 1e-200))
+      throw Input_error(Input_error_code::ZERO_LENGTH_SEGMENT,
+                        which + " is too short (below 1e-100) for double precision; scale the input");
     input.push_back(c);
   }
   if(input.empty())

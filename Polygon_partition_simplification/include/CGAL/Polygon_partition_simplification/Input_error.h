@@ -17,8 +17,8 @@ What was wrong with the input of a function of this package.
 enum class Input_error_code
 {
   EMPTY_INPUT,            ///< no segment, no polygon, or an arrangement without edges
-  NON_FINITE_COORDINATE,  ///< a coordinate is NaN or infinite
-  ZERO_LENGTH_SEGMENT,    ///< a segment whose two endpoints are equal
+  NON_FINITE_COORDINATE,  ///< a coordinate is NaN or infinite, or beyond 1e100 in magnitude
+  ZERO_LENGTH_SEGMENT,    ///< a segment whose two endpoints are equal, or too close for double precision
   DUPLICATED_SEGMENT,     ///< the same segment given twice (in either orientation)
   NO_CELL,                ///< the input bounds no cell (all its edges dangle)
   INVALID_PARAMETER       ///< a parameter is out of its range (negative weight, step ratio not in (0,1), ...)
