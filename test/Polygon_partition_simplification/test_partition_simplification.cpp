@@ -85,10 +85,14 @@ void test_gradient()
     }
   CHECK(worst < 1e-5);
   // the per-line derivative of the descent is the same
-  const I::Line_incidence incidence(w.lines, terms);
-  for(std::size_t i = 0; i < w.lines.size(); ++i) {
-    const I::Vector_3d di = I::line_derivative(w.lines, terms, incidence, weights, i);
+  const I::Line_descent descent(w.lines, terms, weights);
+  CHECK(descent.number_of_moving_lines() == w.lines.size());
+  for(std::size_t m = 0; m < descent.number_of_moving_lines(); ++m) {
+    const std::size_t i = descent.moving_line(m);
+    const I::Vector_3d di = descent.derivative(m);
     for(int c = 0; c < 3; ++c) CHECK(std::abs(di[c] - d[i][c]) < 1e-12 * (1 + std::abs(d[i][c])));
+    const I::Vector_3d gi = descent.gradient(m), g = I::riemannian_gradient(w.lines[i], weights, d[i]);
+    for(int c = 0; c < 3; ++c) CHECK(std::abs(gi[c] - g[c]) < 1e-9 * (1 + std::abs(g[c])));
   }
   for(std::size_t i = 0; i < w.lines.size(); ++i) {
     const auto& L = w.lines[i].coefficients;

@@ -23,8 +23,8 @@ int main(int argc, char** argv)
   // buildings, and the thesis's polygons and simplification time at that size (Table 3.1)
   struct Size { std::size_t buildings; double thesis_polygons, thesis_seconds; };
   const Size sizes[] = {{15, 330, 0.4}, {64, 1422, 1.5}, {124, 2724, 5.3}, {900, 0, 0}};
-  std::printf("%9s %9s %9s %10s %9s %9s %11s %9s %10s %9s %8s %9s\n", "buildings", "segments", "polygons",
-              "kinetic_s", "simpl_s", "polygons", "lines", "orthos", "reduction", "thesis_s", "speedup", "rejected");
+  std::printf("%9s %9s %9s %10s %9s %9s %11s %9s %10s %9s %8s %9s %7s %8s\n", "buildings", "segments", "polygons",
+              "kinetic_s", "simpl_s", "polygons", "lines", "orthos", "reduction", "thesis_s", "speedup", "rejected", "rounds", "steps");
   for(const Size& size : sizes) {
     if(size.buildings > max_buildings) break;
     const auto f = synthetic::make_footprints(size.buildings, 0.05, 7);
@@ -41,9 +41,9 @@ int main(int argc, char** argv)
     }
     char lines[32];
     std::snprintf(lines, sizeof lines, "%zu->%zu", stats.lines_before, stats.lines_after);
-    std::printf("%9zu %9zu %9zu %10.3f %9.3f %9zu %11s %9zu %9.2fx %9s %8s %9zu\n", size.buildings, segments.size(),
+    std::printf("%9zu %9zu %9zu %10.3f %9.3f %9zu %11s %9zu %9.2fx %9s %8s %9zu %7zu %8zu\n", size.buildings, segments.size(),
                 stats.cells_before, kinetic, stats.seconds, stats.cells_after, lines, stats.orthogonal_pairs_after,
-                double(stats.cells_before) / double(stats.cells_after), thesis, speedup, stats.rejected_rounds);
+                double(stats.cells_before) / double(stats.cells_after), thesis, speedup, stats.rejected_rounds, stats.rounds, stats.iterations);
     std::fflush(stdout);
   }
   rusage usage;

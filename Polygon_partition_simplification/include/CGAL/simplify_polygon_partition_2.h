@@ -271,20 +271,21 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   // the partition is valid (at worst, every line back where it was: the partition before the
   // round, which is valid).
   bool finished = false;
+  std::vector<bool> resting; // lines that stay still in the next descent (none in the first)
   while(!finished) {
     const PPS::internal::Working_partition start = w;
     std::vector<PPS::internal::Vector_3d> moved;
     {
-      const PPS::internal::Energy_terms terms = PPS::internal::energy_terms(w);
-      const PPS::internal::Line_incidence incidence(w.lines, terms);
+      PPS::internal::Line_descent descent(w.lines, PPS::internal::energy_terms(w), weights, resting);
       for(double alpha = alpha0; alpha > alpha_min && stats.iterations < max_iterations; alpha *= ratio) {
-        if(!PPS::internal::gradient_step(w.lines, terms, incidence, weights, alpha)) break;
+        if(!descent.step(alpha)) break;
         ++stats.iterations;
       }
-      for(const auto& l : w.lines) moved.push_back(l.coefficients);
+      moved = descent.coefficients();
     }
     std::vector<bool> frozen(start.lines.size(), false);
     PPS::internal::Reduction_counts counts;
+    PPS::internal::Working_partition before_reductions;
     for(;;) {
       w = start;
       const std::vector<signed char> orientations = PPS::internal::Partition_reducer::edge_orientations(w);
@@ -293,6 +294,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
         w.lines[l].is_frozen = frozen[l];
         if(!frozen[l]) w.lines[l].coefficients = moved[l];
       }
+      before_reductions = w;
       PPS::internal::Partition_reducer reducer(w, thresholds);
       counts = reducer.run(orientations);
       const std::vector<std::size_t> defective = to_partition(w).defective_edges();
@@ -311,6 +313,13 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
           for(PPS::internal::Index line : w.vertex_lines[w.edges[e][end]]) freeze(line);
       }
       if(!progress) { w = start; finished = true; counts = {}; break; }
+    }
+    if(!finished) { // the next descent moves the lines the reductions changed, and their neighbours
+      const std::vector<bool> changed = PPS::internal::changed_lines(before_reductions, w);
+      resting.assign(w.lines.size(), true);
+      for(const auto& v : w.vertex_lines)
+        if(std::any_of(v.begin(), v.end(), [&](PPS::internal::Index l) { return bool(changed[l]); }))
+          for(PPS::internal::Index l : v) resting[l] = false;
     }
     for(auto& l : w.lines) { l.is_frozen = false; l.members.clear(); }
     ++stats.rounds;

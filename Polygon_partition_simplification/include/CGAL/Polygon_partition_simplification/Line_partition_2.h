@@ -6,10 +6,12 @@
 
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 
+#include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
@@ -258,14 +260,13 @@ public:
   template <class OutputIterator>
   OutputIterator cells(OutputIterator out) const
   {
-    const Exact_arrangement_2 arrangement = exact_arrangement();
-    auto ccb_polygon = [this](typename Exact_arrangement_2::Ccb_halfedge_const_circulator start) {
+    const Planar_arrangement arrangement = planar_arrangement();
+    auto ccb_polygon = [this](typename Planar_arrangement::Ccb_halfedge_const_circulator start) {
       Polygon_2 polygon;
       auto h = start;
       do {
         const auto& p = h->target()->point();
-        polygon.push_back(Point_2(frame_.center_x + frame_.scale * CGAL::to_double(p.x()),
-                                  frame_.center_y + frame_.scale * CGAL::to_double(p.y())));
+        polygon.push_back(Point_2(frame_.center_x + frame_.scale * p.x(), frame_.center_y + frame_.scale * p.y()));
       } while(++h != start);
       if(polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
       return polygon;
@@ -283,15 +284,49 @@ public:
     return out;
   }
 
-  /// number of cells (bounded faces of the planar graph)
+  /// number of cells (bounded faces of the planar graph; of the arrangement of the edges if
+  /// some of them cross)
   std::size_t number_of_cells() const
   {
-    const Exact_arrangement_2 arrangement = exact_arrangement();
+    if(!crossing_pairs(false).empty()) {
+      const Exact_arrangement_2 arrangement = exact_arrangement();
+      return arrangement.number_of_faces() - arrangement.number_of_unbounded_faces();
+    }
+    const Planar_arrangement arrangement = planar_arrangement();
     return arrangement.number_of_faces() - arrangement.number_of_unbounded_faces();
   }
   /// @}
 
 private:
+  // The points and edges are exactly representable (double coordinates): once no two edges
+  // cross, their arrangement needs exact predicates only (no constructions), which the
+  // filtered predicates of Epick and the non-caching segment traits give at double speed.
+  using Fast_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Planar_arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<Fast_kernel>>;
+
+  std::vector<typename Fast_kernel::Point_2> fast_points() const
+  {
+    std::vector<typename Fast_kernel::Point_2> points;
+    points.reserve(vertices_.size());
+    for(std::size_t v = 0; v < vertices_.size(); ++v) {
+      const std::array<double, 2> p = normalized_point(v);
+      points.emplace_back(p[0], p[1]);
+    }
+    return points;
+  }
+
+  // the arrangement of the edges, which must not cross (`crossing_pairs()` empty)
+  Planar_arrangement planar_arrangement() const
+  {
+    const std::vector<typename Fast_kernel::Point_2> points = fast_points();
+    std::vector<typename Fast_kernel::Segment_2> segments;
+    segments.reserve(edges_.size());
+    for(const Edge& e : edges_) segments.emplace_back(points[e.source], points[e.target]);
+    Planar_arrangement arrangement;
+    CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
+    return arrangement;
+  }
+
   // The first defect (empty if none); with `defective`, collects the edges of all defects.
   std::string analyze(std::vector<std::size_t>* defective) const
   {
@@ -351,16 +386,16 @@ private:
              " cross, overlap or pass through a point";
     }
     // no crossing: the arrangement has exactly the points and edges of the partition
-    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-    const Exact_arrangement_2 arrangement = exact_arrangement();
-    std::map<typename EK::Point_2, std::size_t> vertex_of;
+    const Planar_arrangement arrangement = planar_arrangement();
+    std::map<std::array<double, 2>, std::size_t> vertex_of;
     for(std::size_t v = 0; v < vertices_.size(); ++v)
-      if(!incident[v].empty()) vertex_of.emplace(typename EK::Point_2(points[v][0], points[v][1]), v);
+      if(!incident[v].empty()) vertex_of.emplace(points[v], v);
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_of;
     for(std::size_t e = 0; e < edges_.size(); ++e)
       edge_of[std::minmax(edges_[e].source, edges_[e].target)] = e;
-    auto edge_at = [&](typename Exact_arrangement_2::Halfedge_const_handle h) {
-      const std::size_t u = vertex_of.at(h->source()->point()), v = vertex_of.at(h->target()->point());
+    auto edge_at = [&](typename Planar_arrangement::Halfedge_const_handle h) {
+      auto at = [&](const typename Fast_kernel::Point_2& p) { return vertex_of.at({{p.x(), p.y()}}); };
+      const std::size_t u = at(h->source()->point()), v = at(h->target()->point());
       return edge_of.at(std::minmax(u, v));
     };
     for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
@@ -369,11 +404,11 @@ private:
         if(report("an edge dangles or bridges inside a cell")) return first;
       }
     for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
-      std::vector<typename Exact_arrangement_2::Halfedge_const_handle> ccbs;
+      std::vector<typename Planar_arrangement::Halfedge_const_handle> ccbs;
       if(!f->is_unbounded()) ccbs.push_back(f->outer_ccb());
       for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
       for(auto start : ccbs) {
-        std::vector<std::pair<const void*, typename Exact_arrangement_2::Halfedge_const_handle>> seen;
+        std::vector<std::pair<const void*, typename Planar_arrangement::Halfedge_const_handle>> seen;
         auto h = start;
         do { seen.emplace_back(&*h->target(), h); h = h->next(); } while(h != start);
         std::sort(seen.begin(), seen.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
@@ -392,13 +427,8 @@ private:
   // pair unless `all`.
   std::vector<std::pair<std::size_t, std::size_t>> crossing_pairs(bool all) const
   {
-    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
     using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-    std::vector<typename EK::Point_2> points;
-    for(std::size_t v = 0; v < vertices_.size(); ++v) {
-      const std::array<double, 2> p = normalized_point(v);
-      points.emplace_back(p[0], p[1]);
-    }
+    const std::vector<typename Fast_kernel::Point_2> points = fast_points();
     std::vector<Box> boxes;
     for(std::size_t e = 0; e < edges_.size(); ++e)
       boxes.emplace_back(points[edges_[e].source].bbox() + points[edges_[e].target].bbox(), e);
@@ -407,7 +437,7 @@ private:
       if(!all && !result.empty()) return;
       const Edge& e = edges_[x.info()];
       const Edge& f = edges_[y.info()];
-      const typename EK::Segment_2 se(points[e.source], points[e.target]), sf(points[f.source], points[f.target]);
+      const typename Fast_kernel::Segment_2 se(points[e.source], points[e.target]), sf(points[f.source], points[f.target]);
       std::size_t common = 0, shared = 0;
       for(std::size_t a : {e.source, e.target})
         for(std::size_t b : {f.source, f.target})

@@ -135,81 +135,154 @@ inline Vector_3d riemannian_gradient(const Line_state& l, const Energy_weights& 
   return {-b * g0, a * g0, g1};
 }
 
-// The terms each line takes part in, and the order in which lines move (built once per
-// descent): by decreasing spread of the segment endpoints of their metric (a quantity that
-// rigid motions and scalings of the input do not change), then by index.
-struct Line_incidence
+// A descent: the gradient steps of Eq. 3.14 with the combinatorial structure fixed. The
+// terms are laid out per moving line (compressed rows: the two other lines of each triplet,
+// in the cyclic order that gives det(L_i, L_j, L_k) its sign, and the other line of each
+// pair), with the effective metric of each line (l_min term included), so that a step reads
+// contiguous memory only. Lines move in turn, by decreasing spread of the segment endpoints
+// of their metric (a quantity that rigid motions and scalings of the input do not change),
+// then by index; each line sees the lines before it already moved (Gauss-Seidel order),
+// which breaks symmetric configurations (the regular 360-gon of section 3.3.1)
+// deterministically.
+class Line_descent
 {
-  std::vector<std::vector<std::uint32_t>> triplets, pairs; // indices into the terms, per line
-  std::vector<std::uint32_t> order;
-
-  Line_incidence(const std::vector<Line_state>& lines, const Energy_terms& terms)
-    : triplets(lines.size()), pairs(lines.size()), order(lines.size())
+public:
+  // `resting` (if not empty): lines that do not move either
+  Line_descent(const std::vector<Line_state>& lines, const Energy_terms& terms, const Energy_weights& w,
+               const std::vector<bool>& resting = {})
+    : w_(w), coefficients_(lines.size())
   {
-    for(std::uint32_t t = 0; t < terms.triplets.size(); ++t)
-      for(std::uint32_t l : terms.triplets[t]) triplets[l].push_back(t);
-    for(std::uint32_t p = 0; p < terms.pairs.size(); ++p)
-      for(std::uint32_t l : terms.pairs[p]) pairs[l].push_back(p);
-    std::vector<double> spread(lines.size(), 0);
-    for(std::size_t i = 0; i < lines.size(); ++i) {
-      const Line_metric& m = lines[i].metric;
-      const double n = m(2, 2);
-      if(n > 0) spread[i] = m(0, 0) + m(1, 1) - (m(0, 2) * m(0, 2) + m(1, 2) * m(1, 2)) / n;
+    const std::size_t n = lines.size();
+    for(std::size_t i = 0; i < n; ++i) coefficients_[i] = lines[i].coefficients;
+    std::vector<std::uint32_t> triplet_count(n + 1, 0), pair_count(n + 1, 0);
+    for(const auto& t : terms.triplets) for(std::uint32_t l : t) ++triplet_count[l + 1];
+    for(const auto& p : terms.pairs) for(std::uint32_t l : p) ++pair_count[l + 1];
+    for(std::size_t i = 0; i < n; ++i) {
+      triplet_count[i + 1] += triplet_count[i];
+      pair_count[i + 1] += pair_count[i];
     }
-    for(std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::vector<std::array<std::uint32_t, 2>> triplet_partners(triplet_count[n]);
+    std::vector<std::uint32_t> pair_partners(pair_count[n]);
+    {
+      std::vector<std::uint32_t> next(triplet_count.begin(), triplet_count.end() - 1);
+      for(const auto& t : terms.triplets)
+        for(int at = 0; at < 3; ++at) triplet_partners[next[t[at]]++] = {t[(at + 1) % 3], t[(at + 2) % 3]};
+      next.assign(pair_count.begin(), pair_count.end() - 1);
+      for(const auto& p : terms.pairs) {
+        pair_partners[next[p[0]]++] = p[1];
+        pair_partners[next[p[1]]++] = p[0];
+      }
+    }
+    std::vector<double> spread(n, 0);
+    for(std::size_t i = 0; i < n; ++i) {
+      const Line_metric& m = lines[i].metric;
+      const double c = m(2, 2);
+      if(c > 0) spread[i] = m(0, 0) + m(1, 1) - (m(0, 2) * m(0, 2) + m(1, 2) * m(1, 2)) / c;
+    }
+    std::vector<std::uint32_t> order;
+    for(std::uint32_t i = 0; i < n; ++i)
+      if(!lines[i].is_still() && (resting.empty() || !resting[i])) order.push_back(i);
     std::stable_sort(order.begin(), order.end(),
                      [&](std::uint32_t x, std::uint32_t y) { return spread[x] > spread[y]; });
+    // rows in the order of the moves
+    for(std::uint32_t i : order) {
+      Moving_line m;
+      m.line = i;
+      for(int r = 0, k = 0; r < 3; ++r)
+        for(int c = r; c < 3; ++c) m.metric[k++] = metric_entry(lines[i], w, r, c);
+      m.first_triplet = std::uint32_t(triplet_partners_.size());
+      triplet_partners_.insert(triplet_partners_.end(), triplet_partners.begin() + triplet_count[i],
+                               triplet_partners.begin() + triplet_count[i + 1]);
+      m.first_pair = std::uint32_t(pair_partners_.size());
+      pair_partners_.insert(pair_partners_.end(), pair_partners.begin() + pair_count[i],
+                            pair_partners.begin() + pair_count[i + 1]);
+      moving_.push_back(m);
+    }
+    end_triplets_ = std::uint32_t(triplet_partners_.size());
+    end_pairs_ = std::uint32_t(pair_partners_.size());
   }
+
+  // One gradient step of every free line, in turn. Returns false, with the lines from the
+  // one whose gradient is not finite unchanged, if there is one.
+  bool step(double alpha)
+  {
+    for(std::size_t m = 0; m < moving_.size(); ++m) {
+      const Vector_3d g = gradient(m);
+      if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2])) return false;
+      Vector_3d& l = coefficients_[moving_[m].line];
+      l = normalized_line({l[0] - alpha * g[0], l[1] - alpha * g[1], l[2] - alpha * g[2]});
+    }
+    return true;
+  }
+
+  // D_i = dE/dL_i of the m-th moving line
+  Vector_3d derivative(std::size_t m) const
+  {
+    const Moving_line& row = moving_[m];
+    const Vector_3d& L = coefficients_[row.line];
+    const auto& M = row.metric; // xx xy x yy y 1
+    Vector_3d d{{M[0] * L[0] + M[1] * L[1] + M[2] * L[2], M[1] * L[0] + M[3] * L[1] + M[4] * L[2],
+                 M[2] * L[0] + M[4] * L[1] + M[5] * L[2]}};
+    const std::uint32_t end_t = m + 1 < moving_.size() ? moving_[m + 1].first_triplet : end_triplets_;
+    for(std::uint32_t t = row.first_triplet; t < end_t; ++t) {
+      const Vector_3d bc = cross(coefficients_[triplet_partners_[t][0]], coefficients_[triplet_partners_[t][1]]);
+      const double det = dot(L, bc);
+      if(!(std::abs(det) < w_.collapse_distance) || det == 0) continue;
+      const double s = det > 0 ? w_.concurrency_weight : -w_.concurrency_weight;
+      d[0] += s * bc[0]; d[1] += s * bc[1]; d[2] += s * bc[2];
+    }
+    const std::uint32_t end_p = m + 1 < moving_.size() ? moving_[m + 1].first_pair : end_pairs_;
+    for(std::uint32_t p = row.first_pair; p < end_p; ++p) {
+      const Vector_3d& b = coefficients_[pair_partners_[p]];
+      const double dotp = L[0] * b[0] + L[1] * b[1];
+      if(!(std::abs(dotp) < w_.sin_maximum_angle) || dotp == 0) continue;
+      const double s = dotp > 0 ? w_.orthogonality_weight : -w_.orthogonality_weight;
+      d[0] += s * b[0]; d[1] += s * b[1];
+    }
+    return d;
+  }
+
+  // the Riemannian gradient (Eq. 3.13) of the m-th moving line
+  Vector_3d gradient(std::size_t m) const
+  {
+    const Vector_3d d = derivative(m);
+    const auto& M = moving_[m].metric;
+    const Vector_3d& L = coefficients_[moving_[m].line];
+    const double a = L[0], b = L[1];
+    // D' = D U, M' = U^T M U with U = [[-b, 0], [a, 0], [0, 1]]
+    const double d0 = -b * d[0] + a * d[1], d1 = d[2];
+    const double m00 = b * b * M[0] - 2 * a * b * M[1] + a * a * M[3];
+    const double m01 = -b * M[2] + a * M[4];
+    const double m11 = M[5];
+    const double det = m00 * m11 - m01 * m01;
+    const double g0 = (m11 * d0 - m01 * d1) / det, g1 = (-m01 * d0 + m00 * d1) / det;
+    return {-b * g0, a * g0, g1};
+  }
+
+  std::size_t number_of_moving_lines() const { return moving_.size(); }
+  std::size_t moving_line(std::size_t m) const { return moving_[m].line; }
+  const std::vector<Vector_3d>& coefficients() const { return coefficients_; }
+
+  // writes the coefficients back
+  void store(std::vector<Line_state>& lines) const
+  {
+    for(std::size_t i = 0; i < lines.size(); ++i) lines[i].coefficients = coefficients_[i];
+  }
+
+private:
+  struct Moving_line
+  {
+    std::array<double, 6> metric; // effective metric: xx xy x yy y 1
+    std::uint32_t line = 0;
+    std::uint32_t first_triplet = 0, first_pair = 0;
+  };
+  Energy_weights w_;
+  std::vector<Vector_3d> coefficients_;
+  std::vector<Moving_line> moving_;
+  std::vector<std::array<std::uint32_t, 2>> triplet_partners_;
+  std::vector<std::uint32_t> pair_partners_;
+  std::uint32_t end_triplets_ = 0, end_pairs_ = 0;
 };
-
-// D_i = dE/dL_i for one line.
-inline Vector_3d line_derivative(const std::vector<Line_state>& lines, const Energy_terms& terms,
-                                 const Line_incidence& incidence, const Energy_weights& w, std::size_t i)
-{
-  Vector_3d d{{0, 0, 0}};
-  for(int r = 0; r < 3; ++r)
-    for(int c = 0; c < 3; ++c) d[r] += metric_entry(lines[i], w, r, c) * lines[i].coefficients[c];
-  for(std::uint32_t t : incidence.triplets[i]) {
-    const auto& x = terms.triplets[t];
-    // det(L_i, L_j, L_k) up to the sign of the permutation: use the cyclic order from i
-    const std::size_t at = x[0] == i ? 0 : (x[1] == i ? 1 : 2);
-    const Vector_3d& b = lines[x[(at + 1) % 3]].coefficients;
-    const Vector_3d& c = lines[x[(at + 2) % 3]].coefficients;
-    const Vector_3d bc = cross(b, c);
-    const double det = dot(lines[i].coefficients, bc);
-    if(!(std::abs(det) < w.collapse_distance) || det == 0) continue;
-    const double s = det > 0 ? w.concurrency_weight : -w.concurrency_weight;
-    for(int r = 0; r < 3; ++r) d[r] += s * bc[r];
-  }
-  for(std::uint32_t p : incidence.pairs[i]) {
-    const auto& x = terms.pairs[p];
-    const Vector_3d& a = lines[i].coefficients;
-    const Vector_3d& b = lines[x[0] == i ? x[1] : x[0]].coefficients;
-    const double dotp = a[0] * b[0] + a[1] * b[1];
-    if(!(std::abs(dotp) < w.sin_maximum_angle) || dotp == 0) continue;
-    const double s = dotp > 0 ? w.orthogonality_weight : -w.orthogonality_weight;
-    d[0] += s * b[0];
-    d[1] += s * b[1];
-  }
-  return d;
-}
-
-// One gradient step (Eq. 3.14) of every free line, in turn (`incidence.order`): each line
-// sees the lines before it already moved (Gauss-Seidel order). This breaks symmetric configurations
-// (the regular 360-gon of section 3.3.1) deterministically. Returns false, with the line
-// unchanged, if a gradient is not finite.
-inline bool gradient_step(std::vector<Line_state>& lines, const Energy_terms& terms,
-                          const Line_incidence& incidence, const Energy_weights& w, double step)
-{
-  for(std::size_t i : incidence.order) {
-    if(lines[i].is_still()) continue;
-    const Vector_3d g = riemannian_gradient(lines[i], w, line_derivative(lines, terms, incidence, w, i));
-    if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2])) return false;
-    Vector_3d& l = lines[i].coefficients;
-    l = normalized_line({l[0] - step * g[0], l[1] - step * g[1], l[2] - step * g[2]});
-  }
-  return true;
-}
 
 } // namespace internal
 } // namespace Polygon_partition_simplification

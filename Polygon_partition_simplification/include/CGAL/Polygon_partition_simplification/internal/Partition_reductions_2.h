@@ -532,6 +532,56 @@ public:
   const std::vector<Index>& conflicts() const { return conflicts_; }
 };
 
+// The lines of `after` (the result of `Partition_reducer::run()` on `before`, whose lines
+// carry their `members` in `before`) that the reductions changed: merged lines, lines whose
+// coefficients changed, and lines whose points or edges changed (points named by their lines,
+// and lines by their smallest member, in both partitions).
+inline std::vector<bool> changed_lines(const Working_partition& before, const Working_partition& after)
+{
+  std::vector<Index> name(before.lines.size(), Index(-1)); // line of `before` -> name
+  std::vector<bool> changed(after.lines.size(), false);
+  for(Index r = 0; r < after.lines.size(); ++r) {
+    const auto& members = after.lines[r].members;
+    if(members.empty()) { changed[r] = true; continue; }
+    const Index key = *std::min_element(members.begin(), members.end());
+    for(Index l : members) name[l] = key;
+    changed[r] = members.size() > 1 || after.lines[r].coefficients != before.lines[members[0]].coefficients;
+  }
+  // per name: the sorted point names and edge names around the line
+  using Point_name = std::vector<Index>;
+  auto point_name = [](const Working_partition& x, Index v, const auto& line_name) {
+    Point_name result;
+    for(Index l : x.vertex_lines[v]) result.push_back(line_name(l));
+    std::sort(result.begin(), result.end());
+    result.erase(std::unique(result.begin(), result.end()), result.end());
+    return result;
+  };
+  auto neighbourhoods = [&](const Working_partition& x, std::size_t n, const auto& line_name) {
+    std::vector<std::vector<Point_name>> result(n);
+    std::vector<Point_name> names(x.vertex_lines.size());
+    for(Index v = 0; v < x.vertex_lines.size(); ++v) {
+      names[v] = point_name(x, v, line_name);
+      for(Index l : x.vertex_lines[v]) result[l].push_back(names[v]);
+    }
+    for(const auto& e : x.edges) { // an edge: its two point names, separated by a marker
+      const auto& [first, second] = std::minmax(names[e[1]], names[e[2]]);
+      Point_name edge = first;
+      edge.push_back(Index(-1));
+      edge.insert(edge.end(), second.begin(), second.end());
+      result[e[0]].push_back(std::move(edge));
+    }
+    for(auto& r : result) std::sort(r.begin(), r.end());
+    return result;
+  };
+  const auto old_around = neighbourhoods(before, before.lines.size(), [&](Index l) { return name[l]; });
+  const auto new_around = neighbourhoods(after, after.lines.size(), [&](Index r) {
+    return after.lines[r].members.empty() ? Index(-2) : name[after.lines[r].members[0]];
+  });
+  for(Index r = 0; r < after.lines.size(); ++r)
+    if(!changed[r] && old_around[after.lines[r].members[0]] != new_around[r]) changed[r] = true;
+  return changed;
+}
+
 } // namespace internal
 } // namespace Polygon_partition_simplification
 } // namespace CGAL
