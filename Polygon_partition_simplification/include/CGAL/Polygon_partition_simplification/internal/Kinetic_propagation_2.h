@@ -60,6 +60,26 @@ public:
       const double qx = CGAL::to_double(s.target().x()), qy = CGAL::to_double(s.target().y());
       double_lines_.push_back({py - qy, qx - px, px * qy - py * qx});
     }
+    // parallel classes: segments sorted by their exact direction (up to orientation), so
+    // that testing two segments for parallelism is comparing two integers
+    {
+      std::vector<EK::Direction_2> directions;
+      directions.reserve(n);
+      for(const auto& s : segments) {
+        EK::Vector_2 d = s.target() - s.source();
+        const CGAL::Sign sx = CGAL::sign(d.x());
+        if(sx == CGAL::NEGATIVE || (sx == CGAL::ZERO && CGAL::sign(d.y()) == CGAL::NEGATIVE)) d = -d;
+        directions.emplace_back(d);
+      }
+      std::vector<std::uint32_t> order(n);
+      for(std::uint32_t i = 0; i < n; ++i) order[i] = i;
+      std::sort(order.begin(), order.end(),
+                [&](std::uint32_t x, std::uint32_t y) { return directions[x] < directions[y]; });
+      parallel_class_.assign(n, 0);
+      for(std::size_t k = 1; k < n; ++k)
+        parallel_class_[order[k]] = parallel_class_[order[k - 1]] +
+                                    (directions[order[k - 1]] == directions[order[k]] ? 0 : 1);
+    }
     for(int k = 0; k < 4; ++k) box_[k] = EK::Line_2(box[k], box[(k + 1) % 4]);
     rays_.resize(2 * n);
     for(std::size_t r = 0; r < rays_.size(); ++r) {
@@ -217,7 +237,7 @@ private:
       std::size_t best = c.size();
       FT best_parameter;
       for(std::size_t k = ray.cursor; k < end; ++k) {
-        if(c[k].segment != box_candidate && is_parallel(ray, c[k].segment)) continue;
+        if(c[k].segment != box_candidate && is_parallel(r, c[k].segment)) continue;
         const FT t = exact_parameter(ray, c[k].segment);
         if(best == c.size()) { best = k; best_parameter = t; continue; }
         const CGAL::Comparison_result cmp = CGAL::compare(t, best_parameter);
@@ -242,10 +262,9 @@ private:
     }
   }
 
-  bool is_parallel(const Ray& ray, std::uint32_t segment) const
+  bool is_parallel(std::size_t ray, std::uint32_t segment) const
   {
-    const EK::Line_2& l = lines_[segment];
-    return CGAL::is_zero(l.a() * ray.direction.x() + l.b() * ray.direction.y());
+    return parallel_class_[segment] == parallel_class_[ray / 2];
   }
 
   // does segment j cover point I (exact) at the time ray r reaches it (squared time t2)?
@@ -310,6 +329,7 @@ private:
   const std::vector<EK::Segment_2>& segments_;
   std::vector<EK::Line_2> lines_;
   std::vector<std::array<double, 3>> double_lines_;
+  std::vector<std::uint32_t> parallel_class_; // equal for parallel segments
   std::array<EK::Line_2, 4> box_;
   std::vector<Ray> rays_;
   std::priority_queue<Queued, std::vector<Queued>, Later> queue_;
