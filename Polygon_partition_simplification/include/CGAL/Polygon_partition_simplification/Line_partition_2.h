@@ -452,7 +452,9 @@ private:
       }
       if(bad) result.emplace_back(x.info(), y.info());
     };
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test);
+    // cutoff 200 instead of 10: the edges of a partition are small and many boxes are flat, and
+    // scanning small subsets directly halved the time of this check on the benchmark
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test, std::ptrdiff_t(200));
     return result;
   }
 
