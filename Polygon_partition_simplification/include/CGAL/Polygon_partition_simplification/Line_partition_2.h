@@ -333,17 +333,27 @@ private:
     std::string first;
     auto report = [&](const std::string& what) { if(first.empty()) first = what; return defective == nullptr; };
     auto all_edges = [&] { if(defective) for(std::size_t e = 0; e < edges_.size(); ++e) defective->push_back(e); };
-    std::vector<std::vector<std::size_t>> incident(vertices_.size());
+    std::vector<bool> has_edge(vertices_.size(), false);
     for(std::size_t e = 0; e < edges_.size(); ++e) {
       const Edge& edge = edges_[e];
       if(edge.source == edge.target || edge.source >= vertices_.size() || edge.target >= vertices_.size()) {
         all_edges();
         return "edge " + std::to_string(e) + " does not join two points";
       }
-      incident[edge.source].push_back(e);
-      incident[edge.target].push_back(e);
+      has_edge[edge.source] = has_edge[edge.target] = true;
     }
-    auto mark = [&](std::size_t v) { if(defective) defective->insert(defective->end(), incident[v].begin(), incident[v].end()); };
+    std::vector<std::vector<std::size_t>> incident; // built at the first defect
+    auto mark = [&](std::size_t v) { // the edges at point v
+      if(!defective) return;
+      if(incident.empty()) {
+        incident.resize(vertices_.size());
+        for(std::size_t e = 0; e < edges_.size(); ++e) {
+          incident[edges_[e].source].push_back(e);
+          incident[edges_[e].target].push_back(e);
+        }
+      }
+      defective->insert(defective->end(), incident[v].begin(), incident[v].end());
+    };
     std::vector<std::array<double, 2>> points(vertices_.size());
     for(std::size_t v = 0; v < vertices_.size(); ++v) {
       const auto& l = vertices_[v].lines;
@@ -387,13 +397,15 @@ private:
     }
     // no crossing: the arrangement has exactly the points and edges of the partition
     const Planar_arrangement arrangement = planar_arrangement();
-    std::map<std::array<double, 2>, std::size_t> vertex_of;
-    for(std::size_t v = 0; v < vertices_.size(); ++v)
-      if(!incident[v].empty()) vertex_of.emplace(points[v], v);
+    std::map<std::array<double, 2>, std::size_t> vertex_of;           // built at the first defect
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_of;
-    for(std::size_t e = 0; e < edges_.size(); ++e)
-      edge_of[std::minmax(edges_[e].source, edges_[e].target)] = e;
     auto edge_at = [&](typename Planar_arrangement::Halfedge_const_handle h) {
+      if(edge_of.empty()) {
+        for(std::size_t v = 0; v < vertices_.size(); ++v)
+          if(has_edge[v]) vertex_of.emplace(points[v], v);
+        for(std::size_t e = 0; e < edges_.size(); ++e)
+          edge_of[std::minmax(edges_[e].source, edges_[e].target)] = e;
+      }
       auto at = [&](const typename Fast_kernel::Point_2& p) { return vertex_of.at({{p.x(), p.y()}}); };
       const std::size_t u = at(h->source()->point()), v = at(h->target()->point());
       return edge_of.at(std::minmax(u, v));
