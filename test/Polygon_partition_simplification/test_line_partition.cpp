@@ -284,9 +284,87 @@ void test_bad_input()
   });
 }
 
+// The validity check on hand-made partitions of the unit square (lines x = 0, x = 1, y = 0,
+// y = 1, x = 0.5, y = 0.5), whose defects are known.
+void test_validity_check()
+{
+  using Line = Partition::Line;
+  auto line = [](double a, double b, double c) { Line l; l.coefficients = {{a, b, c}}; return l; };
+  const std::vector<Line> lines{line(1, 0, 0), line(1, 0, -1), line(0, 1, 0), line(0, 1, -1),
+                                line(1, 0, -0.5), line(0, 1, -0.5)};
+  // points 0-3 the corners, 4 and 5 on the bottom and top sides, 6 and 7 on the left and right
+  // sides, 8 the center
+  std::vector<Partition::Vertex> points{{{0, 2}}, {{1, 2}}, {{1, 3}}, {{0, 3}}, {{2, 4}}, {{3, 4}},
+                                        {{0, 5}}, {{1, 5}}, {{4, 5}}};
+  const std::vector<Partition::Edge> sides{{2, 0, 4}, {2, 4, 1}, {1, 1, 7}, {1, 7, 2},
+                                           {3, 2, 5}, {3, 5, 3}, {0, 3, 6}, {0, 6, 0}};
+  auto with = [&](std::vector<Partition::Edge> extra) {
+    std::vector<Partition::Edge> edges = sides;
+    edges.insert(edges.end(), extra.begin(), extra.end());
+    return Partition(Partition::Frame(), lines, points, edges);
+  };
+  // valid: the square cut in four by the two middle lines
+  {
+    const Partition p = with({{4, 4, 8}, {4, 8, 5}, {5, 6, 8}, {5, 8, 7}});
+    CHECK(p.defect().empty() && p.defective_edges().empty() && p.number_of_cells() == 4);
+    std::vector<Partition::Polygon_with_holes_2> cells;
+    p.cells(std::back_inserter(cells));
+    CHECK(cells.size() == 4);
+    for(const auto& c : cells) CHECK(std::abs(c.outer_boundary().area() - 0.25) < 1e-12);
+  }
+  // the middle edges cross without a point at the center
+  {
+    const Partition p = with({{4, 4, 5}, {5, 6, 7}});
+    CHECK(p.defect().find("cross") != std::string::npos);
+    CHECK(p.defective_edges() == std::vector<std::size_t>({8, 9}));
+    CHECK(p.number_of_cells() == 4); // counted on the arrangement, which adds the crossing
+  }
+  auto reported = [](const Partition& p, std::size_t e) {
+    const std::vector<std::size_t> d = p.defective_edges();
+    return std::find(d.begin(), d.end(), e) != d.end();
+  };
+  // an edge dangles into the square (its cell's boundary also passes twice through its foot)
+  {
+    const Partition p = with({{4, 4, 8}});
+    CHECK(p.defect().find("dangles") != std::string::npos);
+    CHECK(reported(p, 8));
+    CHECK(p.number_of_cells() == 1);
+  }
+  // the vertical middle line cuts the square in two, the left half of the horizontal one cuts
+  // the left half in two: valid, three cells
+  {
+    const Partition p = with({{4, 4, 8}, {4, 8, 5}, {5, 6, 8}});
+    CHECK(p.is_valid() && p.number_of_cells() == 3);
+  }
+  // the right half of the horizontal middle line, from the right side, without the vertical
+  // line: it dangles
+  {
+    const Partition p = with({{4, 4, 8}, {4, 8, 5}, {5, 8, 7}, {5, 6, 8}});
+    CHECK(p.is_valid() && p.number_of_cells() == 4);
+    const Partition q = with({{5, 8, 7}});
+    CHECK(q.defect().find("dangles") != std::string::npos && reported(q, 8) && q.number_of_cells() == 1);
+  }
+  // a point at infinity: the two vertical sides "meet"
+  {
+    points.push_back({{0, 1}});
+    const Partition p = with({{0, 3, 9}});
+    points.pop_back();
+    CHECK(p.defect().find("infinity") != std::string::npos);
+    CHECK(p.defective_edges() == std::vector<std::size_t>({8}));
+    CHECK(p.number_of_cells() == 1); // the edge to infinity bounds nothing
+    CHECK(p.exact_arrangement().number_of_edges() == 8);
+  }
+  // an edge off its line
+  {
+    const Partition p = with({{5, 4, 8}});
+    CHECK(p.defect().find("off its line") != std::string::npos);
+  }
+}
+
 int main()
 {
   test_simple_configurations();
+  test_validity_check();
   for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(seed);
   test_against_line_arrangement();
   test_cells_and_invariance();

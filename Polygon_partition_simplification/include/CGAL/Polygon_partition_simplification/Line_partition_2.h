@@ -211,7 +211,8 @@ public:
   /// @{
   /*!
   builds the arrangement of the edges, with exact predicates and constructions on the
-  floating-point coordinates of the points (normalized frame)
+  floating-point coordinates of the points (normalized frame); edges with an end at infinity
+  or with coinciding ends (possible only in an invalid partition) are left out
   */
   Exact_arrangement_2 exact_arrangement() const
   {
@@ -220,11 +221,13 @@ public:
     points.reserve(vertices_.size());
     for(std::size_t v = 0; v < vertices_.size(); ++v) {
       const std::array<double, 2> p = normalized_point(v);
-      points.emplace_back(p[0], p[1]);
+      if(std::isfinite(p[0]) && std::isfinite(p[1])) points.emplace_back(p[0], p[1]);
+      else points.emplace_back(0, 0); // used by no drawn edge
     }
     std::vector<typename EK::Segment_2> segments;
     segments.reserve(edges_.size());
-    for(const Edge& e : edges_) segments.emplace_back(points[e.source], points[e.target]);
+    for(const Edge& e : edges_)
+      if(is_drawable(e)) segments.emplace_back(points[e.source], points[e.target]);
     Exact_arrangement_2 arrangement;
     CGAL::insert(arrangement, segments.begin(), segments.end());
     return arrangement;
@@ -315,13 +318,22 @@ private:
     return points;
   }
 
+  // An edge of an invalid partition may have an end at infinity or two coinciding ends: it
+  // bounds nothing, and the arrangements and the crossing test leave it out.
+  bool is_drawable(const Edge& e) const
+  {
+    const std::array<double, 2> p = normalized_point(e.source), q = normalized_point(e.target);
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(q[0]) && std::isfinite(q[1]) && p != q;
+  }
+
   // the arrangement of the edges, which must not cross (`crossing_pairs()` empty)
   Planar_arrangement planar_arrangement() const
   {
     const std::vector<typename Fast_kernel::Point_2> points = fast_points();
     std::vector<typename Fast_kernel::Segment_2> segments;
     segments.reserve(edges_.size());
-    for(const Edge& e : edges_) segments.emplace_back(points[e.source], points[e.target]);
+    for(const Edge& e : edges_)
+      if(is_drawable(e)) segments.emplace_back(points[e.source], points[e.target]);
     Planar_arrangement arrangement;
     CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
     return arrangement;
@@ -443,7 +455,7 @@ private:
     const std::vector<typename Fast_kernel::Point_2> points = fast_points();
     std::vector<Box> boxes;
     for(std::size_t e = 0; e < edges_.size(); ++e)
-      boxes.emplace_back(points[edges_[e].source].bbox() + points[edges_[e].target].bbox(), e);
+      if(is_drawable(edges_[e])) boxes.emplace_back(points[edges_[e].source].bbox() + points[edges_[e].target].bbox(), e);
     std::vector<std::pair<std::size_t, std::size_t>> result;
     auto test = [&](const Box& x, const Box& y) {
       if(!all && !result.empty()) return;
