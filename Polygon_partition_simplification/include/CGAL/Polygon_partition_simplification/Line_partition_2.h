@@ -217,13 +217,7 @@ public:
   Exact_arrangement_2 exact_arrangement() const
   {
     using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-    std::vector<typename EK::Point_2> points;
-    points.reserve(vertices_.size());
-    for(std::size_t v = 0; v < vertices_.size(); ++v) {
-      const std::array<double, 2> p = normalized_point(v);
-      if(std::isfinite(p[0]) && std::isfinite(p[1])) points.emplace_back(p[0], p[1]);
-      else points.emplace_back(0, 0); // used by no drawn edge
-    }
+    const std::vector<typename EK::Point_2> points = points_in<EK>();
     std::vector<typename EK::Segment_2> segments;
     segments.reserve(edges_.size());
     for(const Edge& e : edges_)
@@ -307,13 +301,17 @@ private:
   using Fast_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Planar_arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<Fast_kernel>>;
 
-  std::vector<typename Fast_kernel::Point_2> fast_points() const
+  // the points in kernel K (normalized frame); a point at infinity, which no drawable edge
+  // uses, is put at the origin
+  template <class K>
+  std::vector<typename K::Point_2> points_in() const
   {
-    std::vector<typename Fast_kernel::Point_2> points;
+    std::vector<typename K::Point_2> points;
     points.reserve(vertices_.size());
     for(std::size_t v = 0; v < vertices_.size(); ++v) {
       const std::array<double, 2> p = normalized_point(v);
-      points.emplace_back(p[0], p[1]);
+      if(std::isfinite(p[0]) && std::isfinite(p[1])) points.emplace_back(p[0], p[1]);
+      else points.emplace_back(0, 0);
     }
     return points;
   }
@@ -329,7 +327,7 @@ private:
   // the arrangement of the edges, which must not cross (`crossing_pairs()` empty)
   Planar_arrangement planar_arrangement() const
   {
-    const std::vector<typename Fast_kernel::Point_2> points = fast_points();
+    const std::vector<typename Fast_kernel::Point_2> points = points_in<Fast_kernel>();
     std::vector<typename Fast_kernel::Segment_2> segments;
     segments.reserve(edges_.size());
     for(const Edge& e : edges_)
@@ -452,7 +450,7 @@ private:
   std::vector<std::pair<std::size_t, std::size_t>> crossing_pairs(bool all) const
   {
     using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-    const std::vector<typename Fast_kernel::Point_2> points = fast_points();
+    const std::vector<typename Fast_kernel::Point_2> points = points_in<Fast_kernel>();
     std::vector<Box> boxes;
     for(std::size_t e = 0; e < edges_.size(); ++e)
       if(is_drawable(edges_[e])) boxes.emplace_back(points[edges_[e].source].bbox() + points[edges_[e].target].bbox(), e);
