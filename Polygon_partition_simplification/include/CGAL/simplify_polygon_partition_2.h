@@ -273,12 +273,29 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   // the partition is valid (at worst, every line back where it was: the partition before the
   // round, which is valid).
   bool finished = false;
-  std::vector<bool> resting; // lines that stay still in the next descent (none in the first)
+  std::vector<bool> changed; // lines the reductions of the previous round changed (none before the first)
   while(!finished) {
     const PPS::internal::Working_partition start = w;
     std::vector<PPS::internal::Vector_3d> moved;
     {
-      PPS::internal::Line_descent descent(w.lines, PPS::internal::energy_terms(w), weights, resting);
+      // After the first round, the descent moves the lines the reductions changed and every
+      // line sharing a term of the energy with one of them; the others rest. A line put back
+      // (frozen) is not woken for that reason alone: with the same neighbours its descent would
+      // lead to the same invalid reduction (waking them made 2.5 times more rounds and rejected
+      // attempts on the benchmark).
+      const PPS::internal::Energy_terms terms = PPS::internal::energy_terms(w);
+      std::vector<bool> resting;
+      if(!changed.empty()) {
+        resting.assign(w.lines.size(), true);
+        auto wake = [&](const auto& term) {
+          if(std::any_of(term.begin(), term.end(), [&](PPS::internal::Index l) { return bool(changed[l]); }))
+            for(PPS::internal::Index l : term) resting[l] = false;
+        };
+        for(const auto& t : terms.triplets) wake(t);
+        for(const auto& p : terms.pairs) wake(p);
+        for(PPS::internal::Index r = 0; r < w.lines.size(); ++r) if(changed[r]) resting[r] = false;
+      }
+      PPS::internal::Line_descent descent(w.lines, terms, weights, resting);
       for(double alpha = alpha0; alpha > alpha_min && stats.iterations < max_iterations &&
                                  descent.number_of_moving_lines() > 0; alpha *= ratio) {
         if(!descent.step(alpha)) break;
@@ -319,22 +336,9 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
       if(!progress) { w = start; finished = true; counts = {}; break; }
     }
     if(!finished) {
-      // The next descent moves the lines the reductions changed and every line sharing a term
-      // of the energy with one of them. A line put back (frozen) is not woken for that reason
-      // alone: with the same neighbours its descent would lead to the same invalid reduction
-      // (waking them made 2.5 times more rounds and rejected attempts on the benchmark).
       PPS::internal::Working_partition before;
       before_reductions(before);
-      const std::vector<bool> changed = PPS::internal::changed_lines(before, w);
-      resting.assign(w.lines.size(), true);
-      const PPS::internal::Energy_terms terms = PPS::internal::energy_terms(w);
-      auto wake = [&](const auto& term) {
-        if(std::any_of(term.begin(), term.end(), [&](PPS::internal::Index l) { return bool(changed[l]); }))
-          for(PPS::internal::Index l : term) resting[l] = false;
-      };
-      for(const auto& t : terms.triplets) wake(t);
-      for(const auto& p : terms.pairs) wake(p);
-      for(PPS::internal::Index r = 0; r < w.lines.size(); ++r) if(changed[r]) resting[r] = false;
+      changed = PPS::internal::changed_lines(before, w);
     }
     for(auto& l : w.lines) { l.is_frozen = false; l.members.clear(); }
     ++stats.rounds;

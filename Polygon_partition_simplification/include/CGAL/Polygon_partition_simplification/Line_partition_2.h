@@ -216,14 +216,9 @@ public:
   */
   Exact_arrangement_2 exact_arrangement() const
   {
-    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-    const std::vector<typename EK::Point_2> points = points_in<EK>();
-    std::vector<typename EK::Segment_2> segments;
-    segments.reserve(edges_.size());
-    for(const Edge& e : edges_)
-      if(is_drawable(e)) segments.emplace_back(points[e.source], points[e.target]);
+    const auto segments = drawable_segments<CGAL::Exact_predicates_exact_constructions_kernel>();
     Exact_arrangement_2 arrangement;
-    CGAL::insert(arrangement, segments.begin(), segments.end());
+    CGAL::insert(arrangement, segments.first.begin(), segments.first.end());
     return arrangement;
   }
 
@@ -301,39 +296,32 @@ private:
   using Fast_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Planar_arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<Fast_kernel>>;
 
-  // the points in kernel K (normalized frame); a point at infinity, which no drawable edge
-  // uses, is put at the origin
+  // The edges as segments in kernel K (normalized frame), with their indices. An edge of an
+  // invalid partition may have an end at infinity or two coinciding ends: it bounds nothing,
+  // and is left out (of the arrangements and of the crossing test).
   template <class K>
-  std::vector<typename K::Point_2> points_in() const
+  std::pair<std::vector<typename K::Segment_2>, std::vector<std::size_t>> drawable_segments() const
   {
-    std::vector<typename K::Point_2> points;
-    points.reserve(vertices_.size());
-    for(std::size_t v = 0; v < vertices_.size(); ++v) {
-      const std::array<double, 2> p = normalized_point(v);
-      if(std::isfinite(p[0]) && std::isfinite(p[1])) points.emplace_back(p[0], p[1]);
-      else points.emplace_back(0, 0);
+    std::vector<std::array<double, 2>> p(vertices_.size());
+    for(std::size_t v = 0; v < vertices_.size(); ++v) p[v] = normalized_point(v);
+    auto finite = [](const std::array<double, 2>& x) { return std::isfinite(x[0]) && std::isfinite(x[1]); };
+    std::pair<std::vector<typename K::Segment_2>, std::vector<std::size_t>> result;
+    for(std::size_t e = 0; e < edges_.size(); ++e) {
+      const std::array<double, 2>& a = p[edges_[e].source];
+      const std::array<double, 2>& b = p[edges_[e].target];
+      if(!finite(a) || !finite(b) || a == b) continue;
+      result.first.emplace_back(typename K::Point_2(a[0], a[1]), typename K::Point_2(b[0], b[1]));
+      result.second.push_back(e);
     }
-    return points;
-  }
-
-  // An edge of an invalid partition may have an end at infinity or two coinciding ends: it
-  // bounds nothing, and the arrangements and the crossing test leave it out.
-  bool is_drawable(const Edge& e) const
-  {
-    const std::array<double, 2> p = normalized_point(e.source), q = normalized_point(e.target);
-    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(q[0]) && std::isfinite(q[1]) && p != q;
+    return result;
   }
 
   // the arrangement of the edges, which must not cross (`crossing_pairs()` empty)
   Planar_arrangement planar_arrangement() const
   {
-    const std::vector<typename Fast_kernel::Point_2> points = points_in<Fast_kernel>();
-    std::vector<typename Fast_kernel::Segment_2> segments;
-    segments.reserve(edges_.size());
-    for(const Edge& e : edges_)
-      if(is_drawable(e)) segments.emplace_back(points[e.source], points[e.target]);
+    const auto segments = drawable_segments<Fast_kernel>();
     Planar_arrangement arrangement;
-    CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
+    CGAL::insert_non_intersecting_curves(arrangement, segments.first.begin(), segments.first.end());
     return arrangement;
   }
 
@@ -450,16 +438,16 @@ private:
   std::vector<std::pair<std::size_t, std::size_t>> crossing_pairs(bool all) const
   {
     using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-    const std::vector<typename Fast_kernel::Point_2> points = points_in<Fast_kernel>();
+    const auto [segments, edge_of] = drawable_segments<Fast_kernel>();
     std::vector<Box> boxes;
-    for(std::size_t e = 0; e < edges_.size(); ++e)
-      if(is_drawable(edges_[e])) boxes.emplace_back(points[edges_[e].source].bbox() + points[edges_[e].target].bbox(), e);
+    for(std::size_t i = 0; i < segments.size(); ++i) boxes.emplace_back(segments[i].bbox(), i);
     std::vector<std::pair<std::size_t, std::size_t>> result;
     auto test = [&](const Box& x, const Box& y) {
       if(!all && !result.empty()) return;
-      const Edge& e = edges_[x.info()];
-      const Edge& f = edges_[y.info()];
-      const typename Fast_kernel::Segment_2 se(points[e.source], points[e.target]), sf(points[f.source], points[f.target]);
+      const Edge& e = edges_[edge_of[x.info()]];
+      const Edge& f = edges_[edge_of[y.info()]];
+      const typename Fast_kernel::Segment_2& se = segments[x.info()];
+      const typename Fast_kernel::Segment_2& sf = segments[y.info()];
       std::size_t common = 0, shared = 0;
       for(std::size_t a : {e.source, e.target})
         for(std::size_t b : {f.source, f.target})
@@ -468,11 +456,11 @@ private:
       if(common == 0) bad = CGAL::do_intersect(se, sf);
       else if(common == 2) bad = true;
       else { // they share an endpoint: they must not overlap
-        const std::size_t oe = e.source == shared ? e.target : e.source;
-        const std::size_t of = f.source == shared ? f.target : f.source;
-        bad = se.has_on(points[of]) || sf.has_on(points[oe]);
+        const auto& oe = e.source == shared ? se.target() : se.source();
+        const auto& of = f.source == shared ? sf.target() : sf.source();
+        bad = se.has_on(of) || sf.has_on(oe);
       }
-      if(bad) result.emplace_back(x.info(), y.info());
+      if(bad) result.emplace_back(edge_of[x.info()], edge_of[y.info()]);
     };
     // cutoff 200 instead of 10: the edges of a partition are small and many boxes are flat, and
     // scanning small subsets directly halved the time of this check on the benchmark

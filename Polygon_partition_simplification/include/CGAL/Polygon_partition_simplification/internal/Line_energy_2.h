@@ -120,19 +120,32 @@ inline void derivative(const std::vector<Line_state>& lines, const Energy_terms&
   }
 }
 
-// Riemannian gradient of line i (Eq. 3.13) from its derivative D_i.
-inline Vector_3d riemannian_gradient(const Line_state& l, const Energy_weights& w, const Vector_3d& d)
+// Entries xx, xy, x, yy, y, 1 of the metric of a line with its l_min term.
+inline std::array<double, 6> effective_metric(const Line_state& l, const Energy_weights& w)
 {
-  const double a = l.coefficients[0], b = l.coefficients[1];
+  std::array<double, 6> m;
+  for(int r = 0, k = 0; r < 3; ++r)
+    for(int c = r; c < 3; ++c) m[k++] = metric_entry(l, w, r, c);
+  return m;
+}
+
+// Riemannian gradient (Eq. 3.13) of the line L with effective metric M from its derivative D.
+inline Vector_3d riemannian_gradient(const Vector_3d& L, const std::array<double, 6>& M, const Vector_3d& d)
+{
+  const double a = L[0], b = L[1];
   // D' = D U, M' = U^T M U with U = [[-b, 0], [a, 0], [0, 1]]
   const double d0 = -b * d[0] + a * d[1], d1 = d[2];
-  const double m00 = b * b * metric_entry(l, w, 0, 0) - 2 * a * b * metric_entry(l, w, 0, 1) +
-                     a * a * metric_entry(l, w, 1, 1);
-  const double m01 = -b * metric_entry(l, w, 0, 2) + a * metric_entry(l, w, 1, 2);
-  const double m11 = metric_entry(l, w, 2, 2);
+  const double m00 = b * b * M[0] - 2 * a * b * M[1] + a * a * M[3];
+  const double m01 = -b * M[2] + a * M[4];
+  const double m11 = M[5];
   const double det = m00 * m11 - m01 * m01;
   const double g0 = (m11 * d0 - m01 * d1) / det, g1 = (-m01 * d0 + m00 * d1) / det;
   return {-b * g0, a * g0, g1};
+}
+
+inline Vector_3d riemannian_gradient(const Line_state& l, const Energy_weights& w, const Vector_3d& d)
+{
+  return riemannian_gradient(l.coefficients, effective_metric(l, w), d);
 }
 
 // A descent: the gradient steps of Eq. 3.14 with the combinatorial structure fixed. The
@@ -188,8 +201,7 @@ public:
     for(std::uint32_t i : order) {
       Moving_line m;
       m.line = i;
-      for(int r = 0, k = 0; r < 3; ++r)
-        for(int c = r; c < 3; ++c) m.metric[k++] = metric_entry(lines[i], w, r, c);
+      m.metric = effective_metric(lines[i], w);
       m.first_triplet = std::uint32_t(triplet_partners_.size());
       triplet_partners_.insert(triplet_partners_.end(), triplet_partners.begin() + triplet_count[i],
                                triplet_partners.begin() + triplet_count[i + 1]);
@@ -245,18 +257,7 @@ public:
   // the Riemannian gradient (Eq. 3.13) of the m-th moving line
   Vector_3d gradient(std::size_t m) const
   {
-    const Vector_3d d = derivative(m);
-    const auto& M = moving_[m].metric;
-    const Vector_3d& L = coefficients_[moving_[m].line];
-    const double a = L[0], b = L[1];
-    // D' = D U, M' = U^T M U with U = [[-b, 0], [a, 0], [0, 1]]
-    const double d0 = -b * d[0] + a * d[1], d1 = d[2];
-    const double m00 = b * b * M[0] - 2 * a * b * M[1] + a * a * M[3];
-    const double m01 = -b * M[2] + a * M[4];
-    const double m11 = M[5];
-    const double det = m00 * m11 - m01 * m01;
-    const double g0 = (m11 * d0 - m01 * d1) / det, g1 = (-m01 * d0 + m00 * d1) / det;
-    return {-b * g0, a * g0, g1};
+    return riemannian_gradient(coefficients_[moving_[m].line], moving_[m].metric, derivative(m));
   }
 
   std::size_t number_of_moving_lines() const { return moving_.size(); }
