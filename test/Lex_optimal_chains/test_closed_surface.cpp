@@ -16,6 +16,7 @@
 #include <CGAL/lex_optimal_closed_surface.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <iostream>
@@ -153,6 +154,65 @@ int main(int argc, char** argv)
       assert(CGAL::orientation(f.first->vertex(ov[0])->point(), f.first->vertex(ov[1])->point(),
                                f.first->vertex(ov[2])->point(), f.first->vertex(i)->point()) == CGAL::NEGATIVE);
     }
+  }
+
+  // --- the surface of any union of cells: random unions around a hub vertex ----------------------
+  // Random sets of cells around one vertex, the first of the triangulation: its edges form
+  // one large bucket of the twin search, and the unions have many non-manifold edges and
+  // vertices. Oracles: CGAL's validity of the halfedge structure (one cycle of halfedges around
+  // every vertex), the facets as triples of points, and the split edges counted by brute force.
+  for(int seed = 0; seed < 3; ++seed) {
+    CGAL::Random rng(seed);
+    DT dt;
+    dt.insert(Point(0, 0, 0)); // inserted one by one: the hub is the first finite vertex
+    for(int i = 0; i < 400; ++i) { // around it, nearly on a sphere: the hub sees most points
+      const double x = rng.get_double(-1, 1), y = rng.get_double(-1, 1), z = rng.get_double(-1, 1);
+      const double r = std::sqrt(x * x + y * y + z * z) / rng.get_double(0.9, 1.0);
+      if(r > 0.1) dt.insert(Point(x / r, y / r, z / r));
+    }
+    const LOC::internal::Handle_index_map<DT::Cell> cells(dt.tds().cells().begin(), dt.tds().cells().end());
+    const LOC::internal::Handle_index_map<DT::Vertex> vertex_positions(dt.tds().vertices().begin(), dt.tds().vertices().end());
+    const DT::Vertex_handle hub = dt.nearest_vertex(Point(0, 0, 0));
+    std::vector<bool> inside(cells.size(), false);
+    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      inside[cells.index(&*c)] = (c->has_vertex(hub) ? rng.get_double() < 0.5 : rng.get_double() < 0.05);
+    std::vector<DT::Facet> facets;
+    std::map<std::pair<Point, Point>, int> edge_facets;
+    std::multiset<std::array<Point, 3>> expected;
+    std::size_t at_hub = 0;
+    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      for(int i = 0; i < 4; ++i)
+        if(inside[cells.index(&*c)] && !inside[cells.index(&*c->neighbor(i))]) {
+          facets.emplace_back(c, i);
+          std::array<Point, 3> t;
+          for(int k = 0; k < 3; ++k) t[k] = c->vertex((i + 1 + k) & 3)->point();
+          std::sort(t.begin(), t.end());
+          expected.insert(t);
+          for(int a = 0; a < 3; ++a)
+            for(int b = a + 1; b < 3; ++b) ++edge_facets[std::make_pair(t[a], t[b])];
+          at_hub += c->vertex((i + 1) & 3) == hub || c->vertex((i + 2) & 3) == hub || c->vertex((i + 3) & 3) == hub;
+        }
+    std::size_t split_edges = 0;
+    for(const auto& e : edge_facets) split_edges += e.second > 2;
+    const LOC::internal::Closed_surface_mesh_3<DT> surface(facets, cells, vertex_positions, inside);
+    Mesh union_mesh;
+    surface.build(union_mesh, union_mesh.points());
+    assert(CGAL::is_valid_polygon_mesh(union_mesh) && CGAL::is_closed(union_mesh) && CGAL::is_triangle_mesh(union_mesh));
+    std::multiset<std::array<Point, 3>> got;
+    for(auto f : faces(union_mesh)) {
+      std::array<Point, 3> t;
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, union_mesh), union_mesh)) t[k++] = union_mesh.point(target(h, union_mesh));
+      std::sort(t.begin(), t.end());
+      got.insert(t);
+    }
+    std::cout << "union of cells (seed " << seed << "): " << facets.size() << " facets, " << at_hub << " at the hub, "
+              << surface.statistics().non_manifold_edges << " split edges (brute force " << split_edges << "), "
+              << surface.statistics().non_manifold_vertices << " split vertices\n";
+    assert(got == expected);
+    assert(surface.statistics().non_manifold_edges == split_edges && split_edges > 0);
+    assert(surface.statistics().non_manifold_vertices > 0 && at_hub > 64);
+    assert(surface.statistics().vertices == num_vertices(union_mesh));
   }
 
   // --- torus: genus 1 ----------------------------------------------------------------------------

@@ -289,7 +289,9 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
     std::vector<typename Triangulation::Facet> facets =
       closed_surface_facets(dt, np, callback, 0.35, report, inside, &positions);
     watch.lap();
-    surface.reset(new Closed_surface_mesh_3<Triangulation>(facets, positions, inside));
+    const Handle_index_map<typename Triangulation::Vertex> vertex_positions(dt.tds().vertices().begin(),
+                                                                            dt.tds().vertices().end());
+    surface.reset(new Closed_surface_mesh_3<Triangulation>(facets, positions, vertex_positions, inside));
   }
   // the triangulation (ours) is freed before the mesh is built: peak memory
   const double extraction_seconds = watch.lap();

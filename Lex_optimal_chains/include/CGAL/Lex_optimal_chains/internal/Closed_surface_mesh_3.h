@@ -56,9 +56,10 @@ public:
   using Cell = typename Triangulation::Cell;
 
   // `facets`: the boundary facets, each given by its inside cell; `cells` numbers the cells
-  // and `inside[cells.index(c)]` tells if a cell is inside.
+  // and `inside[cells.index(c)]` tells if a cell is inside; `vertex_positions` numbers the
+  // vertices.
   Closed_surface_mesh_3(const std::vector<Facet>& facets, const Handle_index_map<Cell>& cells,
-                        const std::vector<bool>& inside)
+                        const Handle_index_map<Vertex>& vertex_positions, const std::vector<bool>& inside)
     : cells_(cells), inside_(inside)
   {
     const std::size_t nf = facets.size();
@@ -72,9 +73,11 @@ public:
       radix_sort_high_words(order, buffer);
       facets_.resize(nf);
       by_rank_.resize(nf);
+      rank_of_.resize(nf);
       for(std::size_t k = 0; k < nf; ++k) {
         facets_[k] = facets[std::uint32_t(order[k])];
         by_rank_[std::uint32_t(order[k])] = std::uint32_t(k);
+        rank_of_[k] = std::uint32_t(order[k]);
       }
     }
     // corners: the outward vertices of each facet, rotated to start at the lexicographically
@@ -89,41 +92,43 @@ public:
         if(CGAL::compare_xyz(v[i]->point(), v[first]->point()) == SMALLER) first = i;
       for(int i = 0; i < 3; ++i) corners_[3 * k + i] = v[(first + i) % 3];
     }
-    // facet lookup: (cell position, index) -> position in `facets_`, by open addressing with
-    // a monotone hash (keys are spread evenly over [0, 4 * cells), and locality is kept)
-    std::size_t slots = 16;
-    while(slots < 2 * nf) slots *= 2;
-    table_.assign(slots, Slot{empty_key, 0});
-    for(std::size_t k = 0; k < nf; ++k) {
-      const std::uint32_t key = facet_key(facets_[k].first, facets_[k].second);
-      std::size_t h = hash(key);
-      while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
-      table_[h] = Slot{key, std::uint32_t(k)};
-    }
-
-    // twins, searched once per pair
+    // twins: an edge of the triangulation with exactly two boundary facets joins them (the
+    // boundary of a union of cells is a cycle, so no other facet can be met when turning
+    // around it); they are found by bucketing the half-edges by their smaller vertex
     twin_.assign(3 * nf, UINT32_MAX);
-    for(std::size_t k = 0; k < nf; ++k) {
-      // the cells met first when turning around the edges of facets ahead are fetched early
-      if(k + 16 < nf) prefetch(&*facets_[k + 16].first);
-      if(k + 8 < nf) {
-        const Facet& f = facets_[k + 8];
-        for(int i = 1; i < 4; ++i) prefetch(&*f.first->neighbor((f.second + i) & 3));
+    if(pair_twins_by_vertices(vertex_positions) < 3 * nf) {
+      // non-manifold edges (four or more boundary facets): turn around them through the
+      // inside cells. Facet lookup: (cell position, index) -> position in `facets_`, by
+      // open addressing with a monotone hash (keys are spread evenly over [0, 4 * cells),
+      // and locality is kept).
+      std::size_t slots = 16;
+      while(slots < 2 * nf) slots *= 2;
+      table_.assign(slots, Slot{empty_key, 0});
+      for(std::size_t k = 0; k < nf; ++k) {
+        const std::uint32_t key = facet_key(facets_[k].first, facets_[k].second);
+        std::size_t h = hash(key);
+        while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
+        table_[h] = Slot{key, std::uint32_t(k)};
       }
-      for(int e = 0; e < 3; ++e) {
-        const std::uint32_t h = std::uint32_t(3 * k + e);
-        if(twin_[h] != UINT32_MAX) continue;
-        const std::uint32_t t = find_twin(k, e);
-        twin_[h] = t;
-        twin_[t] = h;
-      }
+      for(std::size_t k = 0; k < nf; ++k)
+        for(int e = 0; e < 3; ++e) {
+          const std::uint32_t h = std::uint32_t(3 * k + e);
+          if(twin_[h] != UINT32_MAX) continue;
+          const std::uint32_t t = find_twin(k, e);
+          CGAL_assertion(twin_[t] == UINT32_MAX);
+          twin_[h] = t;
+          twin_[t] = h;
+        }
     }
 
-    // one vertex copy per umbrella (the cycle of corners around a vertex linked by twins),
-    // numbered in the canonical order of the facets
+    // one vertex copy per umbrella (the cycle of corners around a vertex linked by twins).
+    // Umbrellas are walked in the memory order of the facets (their corners are then
+    // nearby), and the copies are numbered afterwards in the canonical order: by the first
+    // corner (3 * rank + e) of each umbrella in the given order of the facets.
     corner_vertex_.assign(3 * nf, UINT32_MAX);
     std::vector<std::uint32_t> first_corner; // of each copy
     std::vector<std::uint32_t> repeated;     // repeated neighbors of lower address, per copy
+    std::vector<std::uint64_t> canonical;    // (first canonical corner << 32) | walk id
     std::vector<const Vertex*> around;
     // number of vertices of higher address than `u` that appear twice or more in `v`
     auto count_repeated = [](std::vector<const Vertex*>& v, const Vertex* u) {
@@ -133,23 +138,40 @@ public:
         if(v[i] == v[i - 1] && (i < 2 || v[i - 2] != v[i]) && std::less<const Vertex*>()(u, v[i])) ++n;
       return n;
     };
-    for(std::uint32_t rank = 0; rank < nf; ++rank)
-      for(std::uint32_t c = 3 * by_rank_[rank]; c < 3 * by_rank_[rank] + 3; ++c) {
-        if(corner_vertex_[c] != UINT32_MAX) continue;
-        const std::uint32_t id = std::uint32_t(copies_.size());
-        copies_.push_back(vertex(c));
-        first_corner.push_back(c);
-        // its neighbors: an edge split in several mesh edges shows as a repeated neighbor
-        const Vertex* u = &*copies_.back();
-        around.clear();
-        std::uint32_t x = c;
-        do {
-          corner_vertex_[x] = id;
-          around.push_back(&*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
-          x = next_corner_around_vertex(x);
-        } while(x != c);
-        repeated.push_back(std::uint32_t(count_repeated(around, u)));
+    for(std::uint32_t c = 0; c < 3 * nf; ++c) {
+      if(corner_vertex_[c] != UINT32_MAX) continue;
+      const std::uint32_t id = std::uint32_t(first_corner.size());
+      first_corner.push_back(c);
+      // its neighbors: an edge split in several mesh edges shows as a repeated neighbor
+      const Vertex* u = &*vertex(c);
+      around.clear();
+      std::uint32_t x = c, first = UINT32_MAX;
+      do {
+        corner_vertex_[x] = id;
+        first = (std::min)(first, 3 * rank_of_[x / 3] + x % 3);
+        around.push_back(&*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
+        x = next_corner_around_vertex(x);
+      } while(x != c);
+      repeated.push_back(std::uint32_t(count_repeated(around, u)));
+      canonical.push_back((std::uint64_t(first) << 32) | id);
+    }
+    {
+      std::vector<std::uint64_t> buffer;
+      radix_sort_high_words(canonical, buffer);
+      std::vector<std::uint32_t> number(canonical.size()), sorted_first(canonical.size()),
+        sorted_repeated(canonical.size());
+      copies_.resize(canonical.size());
+      for(std::size_t i = 0; i < canonical.size(); ++i) {
+        const std::uint32_t id = std::uint32_t(canonical[i]);
+        number[id] = std::uint32_t(i);
+        sorted_first[i] = first_corner[id];
+        sorted_repeated[i] = repeated[id];
+        copies_[i] = vertex(first_corner[id]);
       }
+      for(std::uint32_t& v : corner_vertex_) v = number[v];
+      first_corner.swap(sorted_first);
+      repeated.swap(sorted_repeated);
+    }
 
     // statistics
     stats_.vertices = copies_.size();
@@ -208,6 +230,21 @@ public:
     std::vector<Vertex_handle>().swap(corners_);
     std::vector<Facet>().swap(facets_);
     std::vector<Slot>().swap(table_);
+    // half-edges and corners renumbered in the canonical order of the facets (3 * rank + e),
+    // which `build()` follows
+    {
+      std::vector<std::uint32_t> twin(3 * nf), corner_vertex(3 * nf);
+      for(std::uint32_t rank = 0; rank < nf; ++rank)
+        for(std::uint32_t e = 0; e < 3; ++e) {
+          const std::uint32_t h = 3 * by_rank_[rank] + e, t = twin_[h];
+          twin[3 * rank + e] = 3 * rank_of_[t / 3] + t % 3;
+          corner_vertex[3 * rank + e] = corner_vertex_[h];
+        }
+      twin_.swap(twin);
+      corner_vertex_.swap(corner_vertex);
+      std::vector<std::uint32_t>().swap(by_rank_);
+      std::vector<std::uint32_t>().swap(rank_of_);
+    }
   }
 
   const Closed_surface_statistics& statistics() const { return stats_; }
@@ -224,37 +261,35 @@ public:
 
     reserve(mesh, static_cast<typename GT::vertices_size_type>(num_vertices(mesh) + points_.size()),
             static_cast<typename GT::edges_size_type>(num_edges(mesh) + twin_.size() / 2),
-            static_cast<typename GT::faces_size_type>(num_faces(mesh) + by_rank_.size()));
+            static_cast<typename GT::faces_size_type>(num_faces(mesh) + twin_.size() / 3));
     std::vector<vertex_descriptor> vd(points_.size());
     for(std::size_t i = 0; i < points_.size(); ++i) {
       vd[i] = add_vertex(mesh);
       put(vpm, vd[i], points_[i]);
     }
-    // edges and faces are created in the canonical order of the facets
-    std::vector<halfedge_descriptor> hd(twin_.size());
-    std::vector<bool> created(twin_.size(), false);
-    for(std::uint32_t rank = 0; rank < by_rank_.size(); ++rank)
-      for(std::uint32_t h = 3 * by_rank_[rank]; h < 3 * by_rank_[rank] + 3; ++h) {
-        if(created[h]) continue;
+    // half-edge h = 3 * rank + e of facet `rank` in the canonical order; edges are created
+    // in that order, at the first of their two half-edges
+    const std::uint32_t nh = std::uint32_t(twin_.size());
+    std::vector<halfedge_descriptor> hd(nh);
+    for(std::uint32_t h = 0; h < nh; ++h)
+      if(h < twin_[h]) {
         const halfedge_descriptor a = halfedge(add_edge(mesh), mesh);
         hd[h] = a;
         hd[twin_[h]] = opposite(a, mesh);
-        created[h] = created[twin_[h]] = true;
       }
-    for(std::uint32_t rank = by_rank_.size(); rank-- > 0;)
-      for(std::uint32_t h = 3 * by_rank_[rank]; h < 3 * by_rank_[rank] + 3; ++h) {
-        const std::uint32_t target_corner = 3 * (h / 3) + (h % 3 + 1) % 3;
-        set_target(hd[h], vd[corner_vertex_[target_corner]], mesh);
-        set_halfedge(vd[corner_vertex_[target_corner]], hd[h], mesh); // the last one set wins
-      }
-    for(std::uint32_t rank = 0; rank < by_rank_.size(); ++rank) {
-      const std::uint32_t k = by_rank_[rank];
+    // the half-edge of a vertex is the one entering it in its first facet
+    for(std::uint32_t h = nh; h-- > 0;) {
+      const vertex_descriptor v = vd[corner_vertex_[3 * (h / 3) + (h % 3 + 1) % 3]];
+      set_target(hd[h], v, mesh);
+      set_halfedge(v, hd[h], mesh);
+    }
+    for(std::uint32_t h = 0; h < nh; h += 3) {
       const face_descriptor f = add_face(mesh);
-      for(int e = 0; e < 3; ++e) {
-        set_next(hd[3 * k + e], hd[3 * k + (e + 1) % 3], mesh);
-        set_face(hd[3 * k + e], f, mesh);
+      for(std::uint32_t e = 0; e < 3; ++e) {
+        set_next(hd[h + e], hd[h + (e + 1) % 3], mesh);
+        set_face(hd[h + e], f, mesh);
       }
-      set_halfedge(f, hd[3 * k], mesh);
+      set_halfedge(f, hd[h], mesh);
     }
   }
 
@@ -281,18 +316,65 @@ private:
 
   bool is_inside(Cell_handle c) const { return inside_[cells_.index(&*c)]; }
 
-  static void prefetch(const void* p)
-  {
-#if defined(__GNUC__)
-    __builtin_prefetch(p);
-#else
-    (void)p;
-#endif
-  }
-
   // The corner after `c` around its vertex: the twin of the half-edge that enters the vertex
   // in the facet of `c` starts at that vertex in the next facet.
   std::uint32_t next_corner_around_vertex(std::uint32_t c) const { return twin_[3 * (c / 3) + (c % 3 + 2) % 3]; }
+
+  // Sets the twins of the half-edges whose edge bounds exactly two facets; returns how many
+  // half-edges got their twin. `vertex_positions` numbers the vertices.
+  std::size_t pair_twins_by_vertices(const Handle_index_map<Vertex>& vertex_positions)
+  {
+    const std::uint32_t nh = std::uint32_t(corners_.size());
+    std::vector<std::uint32_t> id(nh); // vertex number of each corner
+    for(std::uint32_t c = 0; c < nh; ++c) id[c] = vertex_positions.index(&*corners_[c]);
+    auto head = [&](std::uint32_t h) { return id[3 * (h / 3) + (h % 3 + 1) % 3]; };
+    // half-edges bucketed by their smaller vertex (counting sort)
+    std::vector<std::uint32_t> first(vertex_positions.size() + 1, 0), bucket(nh);
+    for(std::uint32_t h = 0; h < nh; ++h) ++first[(std::min)(id[h], head(h)) + 1];
+    for(std::size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
+    {
+      std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+      for(std::uint32_t h = 0; h < nh; ++h) bucket[next[(std::min)(id[h], head(h))]++] = h;
+    }
+    // in each bucket, half-edges to the same larger vertex: a pair is a twin pair; a group of
+    // four or more is a non-manifold edge. Buckets are small (twice the degree of the vertex
+    // on the surface, counting only its larger neighbors): searched by a double loop, or
+    // sorted when large.
+    std::size_t paired = 0;
+    auto pair_up = [&](std::uint32_t a, std::uint32_t b) {
+      CGAL_assertion(id[a] == head(b) && id[b] == head(a)); // opposite orientations
+      twin_[a] = b;
+      twin_[b] = a;
+      paired += 2;
+    };
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> large; // (larger vertex, half-edge)
+    for(std::size_t v = 0; v + 1 < first.size(); ++v) {
+      const std::uint32_t begin = first[v], end = first[v + 1];
+      if(end - begin > 32) {
+        large.clear();
+        for(std::uint32_t i = begin; i < end; ++i)
+          large.emplace_back((std::max)(id[bucket[i]], head(bucket[i])), bucket[i]);
+        std::sort(large.begin(), large.end());
+        for(std::size_t i = 0; i < large.size();) {
+          std::size_t j = i + 1;
+          while(j < large.size() && large[j].first == large[i].first) ++j;
+          if(j - i == 2) pair_up(large[i].second, large[i + 1].second);
+          i = j;
+        }
+        continue;
+      }
+      for(std::uint32_t i = begin; i < end; ++i) {
+        const std::uint32_t a = bucket[i];
+        if(twin_[a] != UINT32_MAX) continue;
+        const std::uint32_t other = (std::max)(id[a], head(a));
+        std::uint32_t b = UINT32_MAX, count = 1;
+        for(std::uint32_t j = begin; j < end; ++j)
+          if(j != i && (std::max)(id[bucket[j]], head(bucket[j])) == other) { b = bucket[j]; ++count; }
+        if(count == 2) pair_up(a, b); // else a non-manifold edge
+      }
+    }
+    return paired;
+  }
 
   // DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
   Vertex_handle vertex(std::uint32_t c) const { return corners_[c]; }
@@ -327,6 +409,7 @@ private:
 
   std::vector<Facet> facets_;       // in the order of their cells in memory
   std::vector<std::uint32_t> by_rank_; // canonical rank -> index in `facets_`
+  std::vector<std::uint32_t> rank_of_; // index in `facets_` -> canonical rank
   const Handle_index_map<Cell>& cells_;
   const std::vector<bool>& inside_;
   std::vector<Slot> table_;

@@ -21,7 +21,8 @@ namespace internal {
 // The elements are grouped in runs of consecutive addresses; a page table over the
 // address range sends a pointer to the first run that can hold it. Memory is
 // O(number of runs + address range / page size) and a look-up reads a few cached words,
-// instead of a hash table over millions of handles.
+// instead of a hash table over millions of handles. The reverse look-up (index to element)
+// uses a table over pages of 128 indices in the same way.
 template <class Element>
 class Handle_index_map
 {
@@ -42,7 +43,15 @@ public:
       ++runs_.back().size;
     }
     count_ = index - first_index;
+    first_index_ = first_index;
     by_index_ = runs_; // runs in iteration order, for index -> element
+    // index page k -> the run holding index first_index + (k << index_page_bits)
+    index_page_.resize((count_ >> index_page_bits) + 1);
+    for(std::size_t k = 0, r = 0; k < index_page_.size(); ++k) {
+      const std::size_t i = first_index + (k << index_page_bits);
+      while(r + 1 < by_index_.size() && i >= by_index_[r].first + std::size_t(by_index_[r].size)) ++r;
+      index_page_[k] = std::uint32_t(r);
+    }
     std::sort(runs_.begin(), runs_.end(),
               [](const Run& a, const Run& b) { return std::less<const Element*>()(a.begin, b.begin); });
     if(runs_.empty()) return;
@@ -76,16 +85,17 @@ public:
 
   const Element* element(std::uint32_t i) const
   {
-    auto it = std::upper_bound(by_index_.begin(), by_index_.end(), i,
-                               [](std::uint32_t v, const Run& run) { return v < run.first; });
-    CGAL_precondition(it != by_index_.begin());
-    --it;
-    CGAL_precondition(i - it->first < it->size);
-    return it->begin + (i - it->first);
+    CGAL_precondition(i >= first_index_ && i - first_index_ < count_);
+    std::size_t r = index_page_[(i - first_index_) >> index_page_bits];
+    while(i - by_index_[r].first >= by_index_[r].size) ++r; // a few runs at most
+    return by_index_[r].begin + (i - by_index_[r].first);
   }
 
 private:
   static constexpr std::uintptr_t page_size = 1 << 14;
+  static constexpr int index_page_bits = 7;
+  std::vector<std::uint32_t> index_page_; // index page -> first run (in `by_index_`) that holds it
+  std::uint32_t first_index_ = 0;
   std::vector<Run> runs_;     // sorted by address
   std::vector<Run> by_index_; // sorted by index
   std::vector<std::uint32_t> page_;
