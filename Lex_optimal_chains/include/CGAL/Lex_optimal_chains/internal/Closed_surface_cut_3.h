@@ -29,6 +29,15 @@ inline double key_value(std::uint64_t key)
   return d;
 }
 
+inline void prefetch_address(const void* p)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 // Result of the automatic interior choice.
 struct Automatic_interior
 {
@@ -70,6 +79,9 @@ Automatic_interior most_persistent_void(const Graph& graph, const std::vector<st
       const auto& next = records[m - 1 - t - ahead];
       sets.prefetch(Graph::owner_position(next));
       sets.prefetch(Graph::other_position(next));
+      // a cell met for the first time is its own root: its birth is read too
+      prefetch_address(birth.data() + Graph::owner_position(next));
+      prefetch_address(birth.data() + Graph::other_position(next));
     }
     const auto& r = records[m - 1 - t];
     const std::uint32_t scan = std::uint32_t(t + 1);

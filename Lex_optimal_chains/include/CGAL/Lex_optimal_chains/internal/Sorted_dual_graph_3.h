@@ -472,7 +472,11 @@ private:
           record_of_slot.push_back(k);
         }
       radix_sort_high_words(order, buffer);
-      for(std::uint64_t o : order) read(std::uint32_t(o), records_[record_of_slot[std::uint32_t(o)]]);
+      constexpr std::size_t ahead = 12; // cells fetched early: their reads then overlap
+      for(std::size_t i = 0; i < order.size(); ++i) {
+        if(i + ahead < order.size()) prefetch(cells_.element(std::uint32_t(order[i + ahead] >> 32)));
+        read(std::uint32_t(order[i]), records_[record_of_slot[std::uint32_t(order[i])]]);
+      }
     };
     std::vector<std::size_t> all;
     for(std::size_t g0 = 0; g0 < runs.size();) {
