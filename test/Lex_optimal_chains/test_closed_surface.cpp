@@ -156,6 +156,38 @@ int main(int argc, char** argv)
     }
   }
 
+  // --- half-edges grouped by edge, against a map, on random soups (small and large buckets) --------
+  for(int seed = 0; seed < 4; ++seed) {
+    std::mt19937 gen(seed);
+    const std::uint32_t nv = seed < 2 ? 6 : 300; // few vertices: large buckets and groups
+    std::vector<std::uint32_t> corners(3 * (seed % 2 ? 2000 : 300));
+    for(std::size_t t = 0; 3 * t < corners.size(); ++t) { // triangles of distinct vertices
+      do {
+        for(int k = 0; k < 3; ++k) corners[3 * t + k] = std::uint32_t(gen() % nv);
+      } while(corners[3 * t] == corners[3 * t + 1] || corners[3 * t] == corners[3 * t + 2] ||
+              corners[3 * t + 1] == corners[3 * t + 2]);
+    }
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> expected;
+    for(std::uint32_t h = 0; h < corners.size(); ++h) {
+      const std::uint32_t a = corners[h], b = corners[3 * (h / 3) + (h % 3 + 1) % 3];
+      expected[std::make_pair((std::min)(a, b), (std::max)(a, b))].push_back(h);
+    }
+    std::vector<std::vector<std::uint32_t>> got;
+    std::uint32_t previous = 0; // groups come in increasing order of their smaller vertex
+    LOC::internal::for_each_edge_group(nv, std::uint32_t(corners.size()), [&](std::uint32_t c) { return corners[c]; },
+                                       [&](const std::uint32_t* first, const std::uint32_t* last) {
+                                         const std::uint32_t a = corners[*first], b = corners[3 * (*first / 3) + (*first % 3 + 1) % 3];
+                                         assert((std::min)(a, b) >= previous);
+                                         previous = (std::min)(a, b);
+                                         got.emplace_back(first, last);
+                                       });
+    std::vector<std::vector<std::uint32_t>> want;
+    for(const auto& e : expected) want.push_back(e.second);
+    std::sort(got.begin(), got.end());
+    std::sort(want.begin(), want.end());
+    assert(got == want); // the same groups, each in increasing order
+  }
+
   // --- the surface of any union of cells: random unions around a hub vertex ----------------------
   // Random sets of cells around one vertex, the first of the triangulation: its edges form
   // one large bucket of the twin search, and the unions have many non-manifold edges and

@@ -5,7 +5,7 @@
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CHAIN_SOUP_MESH_H
 
 // A triangle soup (the support of a 2-chain) made a valid polygon mesh, with arrays and
-// sorts only (PMP::orient_polygon_soup() does the same with maps, several times slower on
+// bucketing only (PMP::orient_polygon_soup() does the same with maps, several times slower on
 // millions of triangles):
 // - an edge joins the two triangles that share it if it has exactly two; an edge of three
 //   triangles or more is cut (each triangle gets its own copy);
@@ -15,6 +15,7 @@
 // - each vertex gets one copy per umbrella: per class of its corners connected through
 //   joined edges.
 
+#include <CGAL/Lex_optimal_chains/internal/Edge_groups.h>
 #include <CGAL/Lex_optimal_chains/internal/Union_find.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -48,26 +49,16 @@ Chain_soup_statistics add_chain_soup(const std::vector<Point>& points, std::vect
   const std::size_t f = triangles.size();
   // half-edge h = 3 t + k runs from triangles[t][k] to triangles[t][(k+1)%3]
   auto source = [&](std::size_t h) { return triangles[h / 3][h % 3]; };
-  auto target = [&](std::size_t h) { return triangles[h / 3][(h % 3 + 1) % 3]; };
-  std::vector<std::pair<std::uint64_t, Index>> edges(3 * f);
-  for(std::size_t h = 0; h < 3 * f; ++h) {
-    const std::uint64_t a = source(h), b = target(h);
-    edges[h] = {a < b ? (a << 32 | b) : (b << 32 | a), Index(h)};
-  }
-  std::sort(edges.begin(), edges.end());
   std::vector<Index> mate(3 * f, none);
-  for(std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i;
-    while(j < edges.size() && edges[j].first == edges[i].first) ++j;
-    if(j - i == 2) {
-      mate[edges[i].second] = edges[i + 1].second;
-      mate[edges[i + 1].second] = edges[i].second;
-    } else if(j - i > 2) {
-      ++stats.non_manifold_edges;
-    }
-    i = j;
-  }
-  std::vector<std::pair<std::uint64_t, Index>>().swap(edges);
+  for_each_edge_group(points.size(), Index(3 * f), [&](Index c) { return triangles[c / 3][c % 3]; },
+                      [&](const Index* first, const Index* last) {
+                        if(last - first == 2) {
+                          mate[first[0]] = first[1];
+                          mate[first[1]] = first[0];
+                        } else if(last - first > 2) {
+                          ++stats.non_manifold_edges;
+                        }
+                      });
 
   if(!oriented) { // breadth-first orientation, triangle by triangle in their order
     std::vector<char> seen(f, 0);

@@ -11,6 +11,7 @@
 // edge through inside cells only); around a vertex, each umbrella (cycle of facets linked
 // by twins) gets its own copy of the vertex.
 
+#include <CGAL/Lex_optimal_chains/internal/Edge_groups.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Union_find.h>
@@ -327,52 +328,16 @@ private:
     const std::uint32_t nh = std::uint32_t(corners_.size());
     std::vector<std::uint32_t> id(nh); // vertex number of each corner
     for(std::uint32_t c = 0; c < nh; ++c) id[c] = vertex_positions.index(&*corners_[c]);
-    auto head = [&](std::uint32_t h) { return id[3 * (h / 3) + (h % 3 + 1) % 3]; };
-    // half-edges bucketed by their smaller vertex (counting sort)
-    std::vector<std::uint32_t> first(vertex_positions.size() + 1, 0), bucket(nh);
-    for(std::uint32_t h = 0; h < nh; ++h) ++first[(std::min)(id[h], head(h)) + 1];
-    for(std::size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
-    {
-      std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-      for(std::uint32_t h = 0; h < nh; ++h) bucket[next[(std::min)(id[h], head(h))]++] = h;
-    }
-    // in each bucket, half-edges to the same larger vertex: a pair is a twin pair; a group of
-    // four or more is a non-manifold edge. Buckets are small (twice the degree of the vertex
-    // on the surface, counting only its larger neighbors): searched by a double loop, or
-    // sorted when large.
     std::size_t paired = 0;
-    auto pair_up = [&](std::uint32_t a, std::uint32_t b) {
-      CGAL_assertion(id[a] == head(b) && id[b] == head(a)); // opposite orientations
-      twin_[a] = b;
-      twin_[b] = a;
-      paired += 2;
-    };
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> large; // (larger vertex, half-edge)
-    for(std::size_t v = 0; v + 1 < first.size(); ++v) {
-      const std::uint32_t begin = first[v], end = first[v + 1];
-      if(end - begin > 32) {
-        large.clear();
-        for(std::uint32_t i = begin; i < end; ++i)
-          large.emplace_back((std::max)(id[bucket[i]], head(bucket[i])), bucket[i]);
-        std::sort(large.begin(), large.end());
-        for(std::size_t i = 0; i < large.size();) {
-          std::size_t j = i + 1;
-          while(j < large.size() && large[j].first == large[i].first) ++j;
-          if(j - i == 2) pair_up(large[i].second, large[i + 1].second);
-          i = j;
-        }
-        continue;
-      }
-      for(std::uint32_t i = begin; i < end; ++i) {
-        const std::uint32_t a = bucket[i];
-        if(twin_[a] != UINT32_MAX) continue;
-        const std::uint32_t other = (std::max)(id[a], head(a));
-        std::uint32_t b = UINT32_MAX, count = 1;
-        for(std::uint32_t j = begin; j < end; ++j)
-          if(j != i && (std::max)(id[bucket[j]], head(bucket[j])) == other) { b = bucket[j]; ++count; }
-        if(count == 2) pair_up(a, b); // else a non-manifold edge
-      }
-    }
+    for_each_edge_group(vertex_positions.size(), nh, [&](std::uint32_t c) { return id[c]; },
+                        [&](const std::uint32_t* first, const std::uint32_t* last) {
+                          if(last - first != 2) return; // a non-manifold edge (four or more)
+                          const std::uint32_t a = first[0], b = first[1];
+                          CGAL_assertion(id[a] == id[3 * (b / 3) + (b % 3 + 1) % 3]); // opposite ways
+                          twin_[a] = b;
+                          twin_[b] = a;
+                          paired += 2;
+                        });
     return paired;
   }
 
