@@ -245,6 +245,11 @@ int main(int argc, char** argv)
     assert(surface.statistics().non_manifold_edges == split_edges && split_edges > 0);
     assert(surface.statistics().non_manifold_vertices > 0 && at_hub > 64);
     assert(surface.statistics().vertices == num_vertices(union_mesh));
+    std::map<Point, int> copies; // mesh vertices per point: split vertices have several
+    for(auto v : vertices(union_mesh)) ++copies[union_mesh.point(v)];
+    std::size_t split_vertices = 0;
+    for(const auto& c : copies) split_vertices += c.second > 1;
+    assert(surface.statistics().non_manifold_vertices == split_vertices);
   }
 
   // --- torus: genus 1 ----------------------------------------------------------------------------

@@ -8,8 +8,9 @@
 // combinatorial 2-manifold. Non-manifold places are resolved as for an infinitesimally
 // shrunk union: around a Delaunay edge shared by several inside wedges, each wedge gets its
 // own copy of the edge (the twin of a boundary half-edge is found by turning around the
-// edge through inside cells only); around a vertex, each umbrella (cycle of facets linked
-// by twins) gets its own copy of the vertex.
+// edge through inside cells only; an edge of exactly two boundary facets, the common case,
+// joins them directly); around a vertex, each umbrella (cycle of facets linked by twins)
+// gets its own copy of the vertex.
 
 #include <CGAL/Lex_optimal_chains/internal/Edge_groups.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
@@ -64,9 +65,9 @@ public:
     : cells_(cells), inside_(inside)
   {
     const std::size_t nf = facets.size();
-    // Internally the facets are kept in the order of their cells in memory, so that turning
-    // around edges reads nearby entries; `by_rank_` keeps the given (canonical) order for the
-    // numbering of the output.
+    // Internally the facets are kept in the order of their cells in memory, so that the
+    // corners, edges and umbrellas are read nearby; `by_rank_` keeps the given (canonical)
+    // order for the numbering of the output.
     {
       std::vector<std::uint64_t> order(nf), buffer;
       for(std::size_t k = 0; k < nf; ++k)
@@ -127,86 +128,43 @@ public:
     // nearby), and the copies are numbered afterwards in the canonical order: by the first
     // corner (3 * rank + e) of each umbrella in the given order of the facets.
     corner_vertex_.assign(3 * nf, UINT32_MAX);
-    std::vector<std::uint32_t> first_corner; // of each copy
-    std::vector<std::uint32_t> repeated;     // repeated neighbors of lower address, per copy
+    std::vector<std::uint32_t> first_corner; // of each copy, in walk order
     std::vector<std::uint64_t> canonical;    // (first canonical corner << 32) | walk id
-    std::vector<const Vertex*> around;
-    // number of vertices of higher address than `u` that appear twice or more in `v`
-    auto count_repeated = [](std::vector<const Vertex*>& v, const Vertex* u) {
-      std::sort(v.begin(), v.end());
-      std::size_t n = 0;
-      for(std::size_t i = 1; i < v.size(); ++i)
-        if(v[i] == v[i - 1] && (i < 2 || v[i - 2] != v[i]) && std::less<const Vertex*>()(u, v[i])) ++n;
-      return n;
-    };
     for(std::uint32_t c = 0; c < 3 * nf; ++c) {
       if(corner_vertex_[c] != UINT32_MAX) continue;
       const std::uint32_t id = std::uint32_t(first_corner.size());
       first_corner.push_back(c);
-      // its neighbors: an edge split in several mesh edges shows as a repeated neighbor
-      const Vertex* u = &*vertex(c);
-      around.clear();
       std::uint32_t x = c, first = UINT32_MAX;
       do {
         corner_vertex_[x] = id;
         first = (std::min)(first, 3 * rank_of_[x / 3] + x % 3);
-        around.push_back(&*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
         x = next_corner_around_vertex(x);
       } while(x != c);
-      repeated.push_back(std::uint32_t(count_repeated(around, u)));
       canonical.push_back((std::uint64_t(first) << 32) | id);
     }
     {
       std::vector<std::uint64_t> buffer;
       radix_sort_high_words(canonical, buffer);
-      std::vector<std::uint32_t> number(canonical.size()), sorted_first(canonical.size()),
-        sorted_repeated(canonical.size());
+      std::vector<std::uint32_t> number(canonical.size());
       copies_.resize(canonical.size());
       for(std::size_t i = 0; i < canonical.size(); ++i) {
         const std::uint32_t id = std::uint32_t(canonical[i]);
         number[id] = std::uint32_t(i);
-        sorted_first[i] = first_corner[id];
-        sorted_repeated[i] = repeated[id];
         copies_[i] = vertex(first_corner[id]);
       }
       for(std::uint32_t& v : corner_vertex_) v = number[v];
-      first_corner.swap(sorted_first);
-      repeated.swap(sorted_repeated);
     }
 
-    // statistics
+    // statistics: vertices split in several copies (split edges were counted with the twins)
     stats_.vertices = copies_.size();
     stats_.faces = nf;
-    // vertices split in several copies
-    std::vector<std::pair<const Vertex*, std::uint32_t>> by_vertex(copies_.size());
-    for(std::uint32_t i = 0; i < copies_.size(); ++i) by_vertex[i] = std::make_pair(&*copies_[i], i);
-    std::sort(by_vertex.begin(), by_vertex.end());
-    std::vector<bool> split(copies_.size(), false);
-    for(std::size_t i = 1; i < by_vertex.size(); ++i)
-      if(by_vertex[i].first == by_vertex[i - 1].first) {
-        if(!split[by_vertex[i - 1].second]) ++stats_.non_manifold_vertices;
-        split[by_vertex[i].second] = split[by_vertex[i - 1].second] = true;
+    {
+      std::vector<std::uint8_t> copies_of(vertex_positions.size(), 0);
+      for(const Vertex_handle& v : copies_) {
+        std::uint8_t& n = copies_of[vertex_positions.index(&*v)];
+        if(n == 1) ++stats_.non_manifold_vertices;
+        n = std::uint8_t((std::min)(int(n) + 1, 2));
       }
-    // edges split in several mesh edges: a vertex u sees the other end v of such an edge
-    // twice among its outgoing half-edges, in one umbrella (counted above) or across its
-    // umbrellas when u itself is split (counted here over all of u's umbrellas); each edge
-    // is counted at its end of lower address
-    std::vector<std::pair<const Vertex*, const Vertex*>> across;
-    for(std::uint32_t id = 0; id < copies_.size(); ++id) {
-      if(!split[id]) { stats_.non_manifold_edges += repeated[id]; continue; }
-      std::uint32_t x = first_corner[id];
-      do {
-        across.emplace_back(&*copies_[id], &*vertex(3 * (x / 3) + (x % 3 + 1) % 3));
-        x = next_corner_around_vertex(x);
-      } while(x != first_corner[id]);
-    }
-    std::sort(across.begin(), across.end());
-    for(std::size_t i = 0; i < across.size();) {
-      std::size_t j = i;
-      around.clear();
-      while(j < across.size() && across[j].first == across[i].first) around.push_back(across[j++].second);
-      stats_.non_manifold_edges += count_repeated(around, across[i].first);
-      i = j;
     }
 
     Union_find components(nf);
@@ -321,8 +279,9 @@ private:
   // in the facet of `c` starts at that vertex in the next facet.
   std::uint32_t next_corner_around_vertex(std::uint32_t c) const { return twin_[3 * (c / 3) + (c % 3 + 2) % 3]; }
 
-  // Sets the twins of the half-edges whose edge bounds exactly two facets; returns how many
-  // half-edges got their twin. `vertex_positions` numbers the vertices.
+  // Sets the twins of the half-edges whose edge bounds exactly two facets and counts the
+  // edges of more facets; returns how many half-edges got their twin. `vertex_positions`
+  // numbers the vertices.
   std::size_t pair_twins_by_vertices(const Handle_index_map<Vertex>& vertex_positions)
   {
     const std::uint32_t nh = std::uint32_t(corners_.size());
@@ -331,7 +290,10 @@ private:
     std::size_t paired = 0;
     for_each_edge_group(vertex_positions.size(), nh, [&](std::uint32_t c) { return id[c]; },
                         [&](const std::uint32_t* first, const std::uint32_t* last) {
-                          if(last - first != 2) return; // a non-manifold edge (four or more)
+                          if(last - first != 2) { // a non-manifold edge (four or more): split
+                            ++stats_.non_manifold_edges;
+                            return;
+                          }
                           const std::uint32_t a = first[0], b = first[1];
                           CGAL_assertion(id[a] == id[3 * (b / 3) + (b % 3 + 1) % 3]); // opposite ways
                           twin_[a] = b;
