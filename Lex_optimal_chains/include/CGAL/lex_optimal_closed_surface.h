@@ -184,7 +184,9 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   }
   std::vector<typename Triangulation::Facet> facets;
   facets.reserve(cut.size());
-  for(const Dual_edge_record& r : cut) {
+  for(std::size_t i = 0; i < cut.size(); ++i) {
+    if(i + 8 < cut.size()) graph.prefetch_owner(cut[i + 8]);
+    const Dual_edge_record& r = cut[i];
     const auto owner = graph.cell(Sorted_dual_graph_3<Triangulation>::owner_position(r));
     const int j = Sorted_dual_graph_3<Triangulation>::facet_index(r);
     if(inside[Sorted_dual_graph_3<Triangulation>::owner_position(r)]) facets.emplace_back(owner, j);

@@ -103,7 +103,9 @@ void optimal_chain_on_graph(const Triangulation& dt, const Graph& graph,
   const auto chain = lexicographic_homologous_chain<Arithmetic>(
     graph, infinite, gamma0, relative, Stage_progress{&callback, progress_from, 1.0});
   report.number_of_facets = chain.size();
-  for(const auto& entry : chain) {
+  for(std::size_t i = 0; i < chain.size(); ++i) {
+    if(i + 8 < chain.size()) graph.prefetch_owner(graph.records()[chain[i + 8].first]);
+    const auto& entry = chain[i];
     const auto& r = graph.records()[entry.first];
     const auto owner = graph.cell(Graph::owner_position(r));
     const int j = Graph::facet_index(r);

@@ -117,6 +117,7 @@ public:
   {
 #if defined(__GNUC__)
     __builtin_prefetch(nodes_.data() + x);
+    __builtin_prefetch(rank_.data() + x); // read if x is a root that gets linked
 #else
     (void)x;
 #endif

@@ -49,6 +49,7 @@ public:
   {
 #if defined(__GNUC__)
     __builtin_prefetch(parent_.data() + x);
+    __builtin_prefetch(rank_.data() + x); // read if x is a root that gets linked
 #else
     (void)x;
 #endif
