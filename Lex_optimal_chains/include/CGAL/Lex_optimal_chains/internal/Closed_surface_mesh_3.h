@@ -192,12 +192,13 @@ public:
     // half-edges and corners renumbered in the canonical order of the facets (3 * rank + e),
     // which `build()` follows
     {
+      // read in memory order (a twin is nearby), written at random
       std::vector<std::uint32_t> twin(3 * nf), corner_vertex(3 * nf);
-      for(std::uint32_t rank = 0; rank < nf; ++rank)
+      for(std::uint32_t k = 0; k < nf; ++k)
         for(std::uint32_t e = 0; e < 3; ++e) {
-          const std::uint32_t h = 3 * by_rank_[rank] + e, t = twin_[h];
-          twin[3 * rank + e] = 3 * rank_of_[t / 3] + t % 3;
-          corner_vertex[3 * rank + e] = corner_vertex_[h];
+          const std::uint32_t h = 3 * k + e, t = twin_[h];
+          twin[3 * rank_of_[k] + e] = 3 * rank_of_[t / 3] + t % 3;
+          corner_vertex[3 * rank_of_[k] + e] = corner_vertex_[h];
         }
       twin_.swap(twin);
       corner_vertex_.swap(corner_vertex);
