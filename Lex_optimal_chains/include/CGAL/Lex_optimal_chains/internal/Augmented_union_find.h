@@ -13,6 +13,8 @@
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
 
+#include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
+
 #include <CGAL/assertions.h>
 
 #include <cstdint>
@@ -115,12 +117,8 @@ public:
 
   void prefetch(Index x) const
   {
-#if defined(__GNUC__)
-    __builtin_prefetch(nodes_.data() + x);
-    __builtin_prefetch(rank_.data() + x); // read if x is a root that gets linked
-#else
-    (void)x;
-#endif
+    prefetch_address(nodes_.data() + x);
+    prefetch_address(rank_.data() + x); // read if x is a root that gets linked
   }
 
 private:

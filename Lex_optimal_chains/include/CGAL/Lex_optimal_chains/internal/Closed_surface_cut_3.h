@@ -29,15 +29,6 @@ inline double key_value(std::uint64_t key)
   return d;
 }
 
-inline void prefetch_address(const void* p)
-{
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
 // Result of the automatic interior choice.
 struct Automatic_interior
 {

@@ -66,7 +66,7 @@ public:
   {
     const std::size_t nf = facets.size();
     // Internally the facets are kept in the order of their cells in memory, so that the
-    // corners, edges and umbrellas are read nearby; `by_rank_` keeps the given (canonical)
+    // corners, edges and umbrellas are read nearby; `rank_of_` keeps the given (canonical)
     // order for the numbering of the output.
     {
       std::vector<std::uint64_t> order(nf), buffer;
@@ -74,11 +74,9 @@ public:
         order[k] = (std::uint64_t(facet_key(facets[k].first, facets[k].second)) << 32) | k;
       radix_sort_high_words(order, buffer);
       facets_.resize(nf);
-      by_rank_.resize(nf);
       rank_of_.resize(nf);
       for(std::size_t k = 0; k < nf; ++k) {
         facets_[k] = facets[std::uint32_t(order[k])];
-        by_rank_[std::uint32_t(order[k])] = std::uint32_t(k);
         rank_of_[k] = std::uint32_t(order[k]);
       }
     }
@@ -202,7 +200,6 @@ public:
         }
       twin_.swap(twin);
       corner_vertex_.swap(corner_vertex);
-      std::vector<std::uint32_t>().swap(by_rank_);
       std::vector<std::uint32_t>().swap(rank_of_);
     }
   }
@@ -336,7 +333,6 @@ private:
   }
 
   std::vector<Facet> facets_;       // in the order of their cells in memory
-  std::vector<std::uint32_t> by_rank_; // canonical rank -> index in `facets_`
   std::vector<std::uint32_t> rank_of_; // index in `facets_` -> canonical rank
   const Handle_index_map<Cell>& cells_;
   const std::vector<bool>& inside_;

@@ -51,16 +51,6 @@ public:
 
   bool may_contain(std::uint32_t owner) const { return owners_[owner / 64] >> (owner % 64) & 1; }
 
-  // Hints that the record `code` will be looked up soon (a performance hint only).
-  void prefetch(std::uint32_t code) const
-  {
-#if defined(__GNUC__)
-    __builtin_prefetch(owners_.data() + (code >> 2) / 64);
-#else
-    (void)code;
-#endif
-  }
-
   // the value of `code`, or `zero` if there is none
   Value get(std::uint32_t code, Value zero) const
   {
@@ -112,7 +102,6 @@ lexicographic_homologous_chain(const Graph& graph, const std::vector<std::uint32
       const auto& next = records[m - 1 - t - ahead];
       sets.prefetch(Graph::owner_position(next));
       sets.prefetch(Graph::other_position(next));
-      gamma0.prefetch(next.owner);
     }
     const std::size_t index = m - 1 - t;
     const auto& r = records[index];

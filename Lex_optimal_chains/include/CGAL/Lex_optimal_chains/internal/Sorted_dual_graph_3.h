@@ -22,6 +22,7 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 
@@ -232,8 +233,8 @@ private:
       if(ahead != container.end()) {
         for(int i = 0; i < 4; ++i) { // both lines a vertex may straddle
           const auto* v = &*ahead->vertex(i);
-          prefetch(v);
-          prefetch(reinterpret_cast<const char*>(v) + sizeof(*v) - 1);
+          prefetch_address(v);
+          prefetch_address(reinterpret_cast<const char*>(v) + sizeof(*v) - 1);
         }
         ++ahead;
       }
@@ -322,24 +323,12 @@ private:
     const void* edge[2];
   };
 
-  // Sorts records [i, j) with double evaluations when their error bounds decide every
-  // comparison (insertion sort: runs are short); returns false, leaving the records in some
-  // order, when one comparison is undecided.
-  static void prefetch(const void* p)
-  {
-#if defined(__GNUC__)
-    __builtin_prefetch(p);
-#else
-    CGAL_USE(p);
-#endif
-  }
   // both cache lines that a cell may straddle
   static void prefetch_cell(const Cell* c)
   {
-    prefetch(c);
-    prefetch(reinterpret_cast<const char*>(c) + sizeof(Cell) - 1);
+    prefetch_address(c);
+    prefetch_address(reinterpret_cast<const char*>(c) + sizeof(Cell) - 1);
   }
-
 
   // The longest edge of a record as a pair of vertices, or (null, null) if it is not known
   // from the key pass. Reads the owner cell.

@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H
 
+#include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
+
 #include <CGAL/assertions.h>
 
 #include <cstdint>
@@ -47,12 +49,8 @@ public:
   // Hints that `find(x)` will be called soon (the parent array is read at random).
   void prefetch(Index x) const
   {
-#if defined(__GNUC__)
-    __builtin_prefetch(parent_.data() + x);
-    __builtin_prefetch(rank_.data() + x); // read if x is a root that gets linked
-#else
-    (void)x;
-#endif
+    prefetch_address(parent_.data() + x);
+    prefetch_address(rank_.data() + x); // read if x is a root that gets linked
   }
 
   // Links the two roots `a` and `b` (which must be roots) and returns the new root.
