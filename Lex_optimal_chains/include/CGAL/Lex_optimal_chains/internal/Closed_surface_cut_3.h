@@ -9,6 +9,7 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/Lexicographic_min_cut.h>
+#include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Union_find.h>
 

@@ -20,6 +20,14 @@ inline void prefetch_address(const void* p)
 #endif
 }
 
+// Both cache lines that an object may straddle (cells of 72 bytes, vertices of 40).
+template <class T>
+void prefetch_object(const T* p)
+{
+  prefetch_address(p);
+  prefetch_address(reinterpret_cast<const char*>(p) + sizeof(T) - 1);
+}
+
 } // namespace internal
 } // namespace Lex_optimal_chains
 } // namespace CGAL

@@ -171,7 +171,7 @@ public:
 
   static std::uint32_t owner_position(const Record& r) { return r.owner >> 2; }
   // Hints that the owner cell of `r` will be read soon (a performance hint only).
-  void prefetch_owner(const Record& r) const { prefetch_cell(cells_.element(owner_position(r))); }
+  void prefetch_owner(const Record& r) const { prefetch_object(cells_.element(owner_position(r))); }
   static std::uint32_t other_position(const Record& r) { return r.other & 0x3fffffffu; }
   static int longest_edge(const Record& r) { return int(r.other >> 30); }
   static int facet_index(const Record& r) { return int(r.owner & 3); }
@@ -231,11 +231,7 @@ private:
     for(int i = 0; i < 8 && ahead != container.end(); ++i) ++ahead;
     for(auto it = container.begin(); it != container.end(); ++it, ++pos) {
       if(ahead != container.end()) {
-        for(int i = 0; i < 4; ++i) { // both lines a vertex may straddle
-          const auto* v = &*ahead->vertex(i);
-          prefetch_address(v);
-          prefetch_address(reinterpret_cast<const char*>(v) + sizeof(*v) - 1);
-        }
+        for(int i = 0; i < 4; ++i) prefetch_object(&*ahead->vertex(i));
         ++ahead;
       }
       if((pos & 0xfffff) == 0 && !progress(0.5 * double(pos) / double(cells_.size())))
@@ -323,12 +319,6 @@ private:
     const void* edge[2];
   };
 
-  // both cache lines that a cell may straddle
-  static void prefetch_cell(const Cell* c)
-  {
-    prefetch_address(c);
-    prefetch_address(reinterpret_cast<const char*>(c) + sizeof(Cell) - 1);
-  }
 
   // The longest edge of a record as a pair of vertices, or (null, null) if it is not known
   // from the key pass. Reads the owner cell.
@@ -476,7 +466,7 @@ private:
       radix_sort_high_words(order, buffer);
       constexpr std::size_t ahead = 12; // cells fetched early: their reads then overlap
       for(std::size_t i = 0; i < order.size(); ++i) {
-        if(i + ahead < order.size()) prefetch_cell(cells_.element(std::uint32_t(order[i + ahead] >> 32)));
+        if(i + ahead < order.size()) prefetch_object(cells_.element(std::uint32_t(order[i + ahead] >> 32)));
         read(std::uint32_t(order[i]), records_[record_of_slot[std::uint32_t(order[i])]]);
       }
     };
