@@ -50,10 +50,36 @@ double total_area(const Partition& p)
   return area;
 }
 
-// The rules of the kinetic framework, checked on the extents by brute force (exact).
-void test_kinetic_rules(unsigned seed)
+// Short segments in a few clusters, long ones across them, and axis-parallel ones on a
+// lattice (collinear pieces, equal arrival times): the candidates of most rays come from far
+// cells of the grid of the propagation, at all distances.
+std::vector<K::Segment_2> mixed_segments(unsigned seed)
 {
-  const auto input = random_segments(40, seed);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1), angle(0, 6.283185307179586);
+  std::vector<K::Segment_2> s;
+  for(int cluster = 0; cluster < 4; ++cluster) {
+    const double cx = 100 * u(rng), cy = 100 * u(rng);
+    for(int i = 0; i < 40; ++i) {
+      const double x = cx + 6 * u(rng), y = cy + 6 * u(rng), a = angle(rng), l = 0.05 + 0.5 * u(rng);
+      s.emplace_back(K::Point_2(x, y), K::Point_2(x + l * std::cos(a), y + l * std::sin(a)));
+    }
+  }
+  while(s.size() < 168) { // long ones, inside [0, 100]^2 like the others
+    const K::Point_2 p(100 * u(rng), 100 * u(rng)), q(100 * u(rng), 100 * u(rng));
+    if(CGAL::squared_distance(p, q) > 60 * 60) s.emplace_back(p, q);
+  }
+  for(int i = 0; i < 5; ++i)
+    for(int j = 0; j < 5; ++j) {
+      s.emplace_back(K::Point_2(20 * i, 20 * j + 3), K::Point_2(20 * i + 2, 20 * j + 3));
+      s.emplace_back(K::Point_2(20 * i + 10, 20 * j), K::Point_2(20 * i + 10, 20 * j + 1));
+    }
+  return s;
+}
+
+// The rules of the kinetic framework, checked on the extents by brute force (exact).
+void test_kinetic_rules(const std::vector<K::Segment_2>& input)
+{
   std::vector<EK::Segment_2> segments;
   for(const auto& s : input)
     segments.emplace_back(EK::Point_2(s.source().x(), s.source().y()), EK::Point_2(s.target().x(), s.target().y()));
@@ -365,7 +391,8 @@ int main()
 {
   test_simple_configurations();
   test_validity_check();
-  for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(seed);
+  for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(random_segments(40, seed));
+  for(unsigned seed = 1; seed <= 2; ++seed) test_kinetic_rules(mixed_segments(seed));
   test_against_line_arrangement();
   test_cells_and_invariance();
   test_builders();

@@ -15,6 +15,18 @@
 // processed in exact time order (candidates are found in double precision, and candidates
 // of a ray whose double parameters are close are ordered exactly). The result is the final
 // extent of every segment.
+//
+// Events that cannot stop a ray are not queued: a segment S_j can cover the point I where a
+// ray meets its line only if it gets there first, so only if d(I, S_j) <= T_ray(I), whether
+// S_j is stopped before or not. A candidate is dropped when d(I, S_j) exceeds T_ray(I) by more
+// than a bound on the rounding errors of the double computation (see `cannot_cover()`), so
+// the extents are the same as with every intersection of supporting lines processed, and most
+// rays, which cross many supporting lines far from their segments, make a few exact events
+// instead of hundreds. Such a segment is also within 2 T_ray(I) of the ray's origin, so the
+// candidates are searched in a grid of the segments, by increasing distance from the origin
+// (see `refill()`), instead of among all segments.
+
+#include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -59,6 +71,18 @@ public:
       const double px = CGAL::to_double(s.source().x()), py = CGAL::to_double(s.source().y());
       const double qx = CGAL::to_double(s.target().x()), qy = CGAL::to_double(s.target().y());
       double_lines_.push_back({py - qy, qx - px, px * qy - py * qx});
+      double_segments_.push_back({px, py, qx, qy});
+      magnitude_ = std::max({magnitude_, std::abs(px), std::abs(py), std::abs(qx), std::abs(qy)});
+    }
+    {
+      std::array<double, 2> low{{CGAL::to_double(box[0].x()), CGAL::to_double(box[0].y())}}, high = low;
+      for(const Point& p : box)
+        for(int c = 0; c < 2; ++c) {
+          low[c] = std::min(low[c], CGAL::to_double(p[c]));
+          high[c] = std::max(high[c], CGAL::to_double(p[c]));
+        }
+      grid_ = Segment_grid_2(double_segments_, low, high);
+      visited_.assign(n, 0);
     }
     // parallel classes: segments sorted by their exact direction (up to orientation), so
     // that testing two segments for parallelism is comparing two integers
@@ -126,7 +150,6 @@ public:
 
 private:
   static constexpr std::uint32_t box_candidate = std::numeric_limits<std::uint32_t>::max();
-  static constexpr std::size_t batch_size = 16;
 
   struct Candidate
   {
@@ -180,7 +203,13 @@ private:
     return -(l.a() * ray.origin.x() + l.b() * ray.origin.y() + l.c()) / den;
   }
 
-  // scans all segments for the next batch of candidates beyond `last`
+  // The next batch of candidates of ray r beyond `last`: intersections with supporting lines
+  // whose segment may get there first. A segment S_j that covers the point O + t V no later
+  // than the ray is within t |V| of it, so within 2 t |V| of the origin O: the segments are
+  // visited ring of grid cells by ring of cells around O, and once every segment closer to O
+  // than rho is visited, every candidate with 2 t |V| < rho is known. The batch is the known
+  // candidates below such a cut (with slack for rounding and for the tolerance with which
+  // `push_next()` groups nearly equal parameters, so that no group is split between batches).
   void refill(std::size_t r)
   {
     ++statistics_.refills;
@@ -189,33 +218,64 @@ private:
     const double ox = CGAL::to_double(ray.origin.x()), oy = CGAL::to_double(ray.origin.y());
     const double vx = CGAL::to_double(ray.direction.x()), vy = CGAL::to_double(ray.direction.y());
     const double limit = ray.box_parameter_double * (1 + 1e-9) + 1e-12;
+    if(++stamp_ == 0) { std::fill(visited_.begin(), visited_.end(), 0); stamp_ = 1; }
     std::vector<Candidate> found;
-    for(std::size_t j = 0; j < double_lines_.size(); ++j) {
-      if(j == own) continue;
+    double smallest = std::numeric_limits<double>::infinity();
+    auto visit = [&](std::uint32_t j) {
+      if(visited_[j] == stamp_) return;
+      visited_[j] = stamp_;
+      if(j == own) return;
       const auto& l = double_lines_[j];
       const double den = l[0] * vx + l[1] * vy;
-      if(den == 0) continue;
+      if(den == 0) return;
       const double t = -(l[0] * ox + l[1] * oy + l[2]) / den;
-      if(!(t > -1e-9) || t > limit) continue;
-      const Candidate c{t, std::uint32_t(j)};
-      if(ray.last < c) found.push_back(c);
+      if(!(t > -1e-9) || t > limit) return;
+      const Candidate c{t, j};
+      if(!(ray.last < c) || cannot_cover(j, ox, oy, vx, vy, ray.direction_length, t, den)) return;
+      found.push_back(c);
+      smallest = std::min(smallest, t);
+    };
+    if(!ray.box_listed) smallest = ray.box_parameter_double;
+    const int x = grid_.column(ox), y = grid_.row(oy);
+    double cut = std::numeric_limits<double>::infinity();
+    for(int k = 0;; ++k) {
+      grid_.for_each_in_ring(x, y, k, visit);
+      if(grid_.covers_all(x, y, k)) { cut = std::numeric_limits<double>::infinity(); break; }
+      const double known = std::max(0., (k - 1) * grid_.cell_size() / (2 * ray.direction_length));
+      cut = known * (1 - 1e-6) - 1e-8 * std::max(1., known);
+      if(smallest <= cut) break;
     }
-    if(!ray.box_listed) found.push_back({ray.box_parameter_double, box_candidate});
-    if(found.size() > batch_size) {
-      std::nth_element(found.begin(), found.begin() + batch_size - 1, found.end());
-      // keep every candidate close to the last one kept, so that a cluster of nearly equal
-      // parameters is never split between two batches
-      const double cut = found[batch_size - 1].parameter;
-      const double tolerance = 1e-9 * std::max(1., std::abs(cut));
-      auto end = std::partition(found.begin() + batch_size, found.end(),
-                                [&](const Candidate& c) { return c.parameter <= cut + tolerance; });
-      found.erase(end, found.end());
+    found.erase(std::remove_if(found.begin(), found.end(), [&](const Candidate& c) { return c.parameter > cut; }),
+                found.end());
+    if(!ray.box_listed && ray.box_parameter_double <= cut) {
+      found.push_back({ray.box_parameter_double, box_candidate});
+      ray.box_listed = true;
     }
     std::sort(found.begin(), found.end());
-    for(const Candidate& c : found)
-      if(c.segment == box_candidate) ray.box_listed = true;
     ray.candidates = std::move(found);
     ray.cursor = 0;
+  }
+
+  // Certainly (in spite of rounding) true when segment j does not reach the point I = O + t V
+  // of the ray (origin O, direction V of length |V|) before the ray: d(I, S_j) > t |V|, with
+  // t and den = (a_j, b_j) . V computed in double. Error bound: the coordinates are at most
+  // M in absolute value, so the line of S_j evaluated at O is off by a few units in the last
+  // place of M |S_j|, and t |V| and I are off by about 1e-15 M / sin(theta), theta the angle
+  // between the ray and S_j (so are both distances compared); the margin is 1e-9 M / sin(theta),
+  // a million times more. Nearly parallel lines (sin(theta) < 1e-6) are always kept.
+  bool cannot_cover(std::size_t j, double ox, double oy, double vx, double vy, double v_length,
+                    double t, double den) const
+  {
+    const auto& s = double_segments_[j];
+    const double wx = s[2] - s[0], wy = s[3] - s[1];
+    const double w_length = std::sqrt(wx * wx + wy * wy);
+    const double sin_theta = std::abs(den) / (v_length * w_length);
+    if(!(sin_theta > 1e-6)) return false;
+    const double ix = ox + t * vx, iy = oy + t * vy;
+    const double along = ((ix - s[0]) * wx + (iy - s[1]) * wy) / w_length; // from the source
+    const double beyond = std::max(-along, along - w_length);            // d(I, S_j)
+    const double margin = 1e-9 * std::max(magnitude_, std::abs(t) * v_length) / sin_theta;
+    return beyond > std::abs(t) * v_length + margin;
   }
 
   // Puts the exact minimum of the current cluster at the cursor and queues the ray.
@@ -316,19 +376,37 @@ private:
     push_next(r);
   }
 
-  // is the next intersection along the ray (a line or the box) closer than the crossing distance?
-  bool next_is_close(Ray& ray, double parameter)
+  // Is the next intersection along the ray (with a supporting line, wherever its segment is,
+  // or with the box) closer than the crossing distance? The candidates of the ray are only
+  // those that may stop it, so the supporting lines are scanned again.
+  bool next_is_close(const Ray& ray, double parameter) const
   {
-    std::size_t r = std::size_t(&ray - rays_.data());
-    if(ray.cursor == ray.candidates.size()) refill(r);
-    if(ray.cursor == ray.candidates.size()) return false;
-    return (ray.candidates[ray.cursor].parameter - parameter) * ray.direction_length <
-           crossing_distance_;
+    const std::size_t own = std::size_t(&ray - rays_.data()) / 2;
+    const double ox = CGAL::to_double(ray.origin.x()), oy = CGAL::to_double(ray.origin.y());
+    const double vx = CGAL::to_double(ray.direction.x()), vy = CGAL::to_double(ray.direction.y());
+    const double limit = ray.box_parameter_double * (1 + 1e-9) + 1e-12;
+    Candidate next{ray.box_parameter_double, box_candidate};
+    for(std::size_t j = 0; j < double_lines_.size(); ++j) {
+      if(j == own) continue;
+      const auto& l = double_lines_[j];
+      const double den = l[0] * vx + l[1] * vy;
+      if(den == 0) continue;
+      const double t = -(l[0] * ox + l[1] * oy + l[2]) / den;
+      if(!(t > -1e-9) || t > limit) continue;
+      const Candidate c{t, std::uint32_t(j)};
+      if(ray.last < c && c < next) next = c;
+    }
+    return (next.parameter - parameter) * ray.direction_length < crossing_distance_;
   }
 
   const std::vector<EK::Segment_2>& segments_;
   std::vector<EK::Line_2> lines_;
   std::vector<std::array<double, 3>> double_lines_;
+  std::vector<std::array<double, 4>> double_segments_; // endpoints, rounded to double
+  double magnitude_ = 0;                               // largest absolute coordinate
+  Segment_grid_2 grid_{{}, {{0, 0}}, {{1, 1}}};        // the segments, by position
+  std::vector<std::uint32_t> visited_;                 // stamp of the last refill that saw a segment
+  std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> parallel_class_; // equal for parallel segments
   std::array<EK::Line_2, 4> box_;
   std::vector<Ray> rays_;
