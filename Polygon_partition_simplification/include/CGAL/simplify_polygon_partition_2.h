@@ -72,8 +72,11 @@ share a term of the energy with them. A reduction is decided when
 normalized frame of the partition). After every round the partition is checked with exact
 predicates (`Line_partition_2::defect()`); when it is not valid, the lines of the defective
 edges (and the lines through their ends) get back the coordinates they had before the descent
-and may not merge, and the reductions are redone, until the partition is valid (at worst it
-is the partition before the round). The result is always a valid partition.
+and may not merge, and the reductions are redone, until the partition is valid. When these
+lines are all kept back already (the defect comes from a change further away, such as a point
+removed between the ends of an edge), the lines within one more point of them are kept back
+too, ring after ring; at worst the result of the round is the partition before it. The result
+is always a valid partition.
 
 Lengths are in input units and converted to the normalized frame of the partition (where
 the half-diagonal of its enclosing rectangle is 1); the weights \f$\lambda_1\f$ and
@@ -314,6 +317,8 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
       }
     };
     const std::vector<signed char> orientations = PPS::internal::Partition_reducer::edge_orientations(start);
+    std::size_t ring = 0; // how far around a defect lines are frozen (grows when freezing stalls)
+    std::vector<std::vector<PPS::internal::Index>> start_line_points; // built when a ring is needed
     for(;;) {
       before_reductions(w);
       PPS::internal::Partition_reducer reducer(w, thresholds);
@@ -332,6 +337,41 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
         freeze(w.edges[e][0]);
         for(int end = 1; end <= 2; ++end)
           for(PPS::internal::Index line : w.vertex_lines[w.edges[e][end]]) freeze(line);
+      }
+      // All these lines frozen already: the defect comes from a change further away (a point
+      // between the ends of the edge removed because another line moved or merged). The lines
+      // within `ring` points of them (before the round) are frozen too, one more ring each time.
+      while(!progress && !defective.empty()) {
+        ++ring;
+        if(start_line_points.empty()) {
+          start_line_points.resize(start.lines.size());
+          for(PPS::internal::Index v = 0; v < start.vertex_lines.size(); ++v)
+            for(PPS::internal::Index l : start.vertex_lines[v]) start_line_points[l].push_back(v);
+        }
+        std::vector<bool> reached(start.lines.size(), false);
+        std::vector<PPS::internal::Index> layer;
+        auto reach = [&](PPS::internal::Index line) {
+          for(PPS::internal::Index l : w.lines[line].members)
+            if(!reached[l]) { reached[l] = true; layer.push_back(l); }
+        };
+        for(std::size_t e : defective) {
+          reach(w.edges[e][0]);
+          for(int end = 1; end <= 2; ++end)
+            for(PPS::internal::Index line : w.vertex_lines[w.edges[e][end]]) reach(line);
+        }
+        bool grew = true;
+        for(std::size_t step = 0; step < ring && grew; ++step) {
+          std::vector<PPS::internal::Index> next;
+          for(PPS::internal::Index l : layer)
+            for(PPS::internal::Index v : start_line_points[l])
+              for(PPS::internal::Index m : start.vertex_lines[v])
+                if(!reached[m]) { reached[m] = true; next.push_back(m); }
+          grew = !next.empty();
+          layer = std::move(next);
+        }
+        for(PPS::internal::Index l = 0; l < start.lines.size(); ++l)
+          if(reached[l] && !frozen[l] && !start.lines[l].is_fixed) { frozen[l] = true; progress = true; }
+        if(!grew) break; // the whole connected part is frozen
       }
       if(!progress) { w = start; finished = true; counts = {}; break; }
     }
