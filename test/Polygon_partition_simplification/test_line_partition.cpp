@@ -1,6 +1,7 @@
 // Partitions in line representation: the kinetic partition against its own rules checked by
 // brute force with exact arithmetic, against CGAL's arrangement of full lines when segments
 // may cross everything, builders from polygons and arrangements, cells, bad input.
+#include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -13,6 +14,7 @@
 #include <cassert>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -387,10 +389,78 @@ void test_validity_check()
   }
 }
 
+// The face part of the validity check (facial walks of the rotation system) against the
+// faces of CGAL's arrangement of the edges, on kinetic partitions with random edges removed
+// (which leaves dangling edges, bridges and pinched cell boundaries): same verdict, same
+// edges reported.
+void test_faces_against_arrangement()
+{
+  using Arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<K>>;
+  std::size_t invalid = 0, total = 0;
+  for(unsigned seed = 1; seed <= 40; ++seed) {
+    const Partition full = CGAL::kinetic_partition_2(random_segments(12 + seed % 20, seed));
+    std::mt19937 rng(seed);
+    std::vector<Partition::Edge> edges = full.edges();
+    const std::size_t removed = 1 + seed % 4;
+    for(std::size_t k = 0; k < removed && edges.size() > 1; ++k)
+      edges.erase(edges.begin() + std::uniform_int_distribution<std::size_t>(0, edges.size() - 1)(rng));
+    const Partition p(full.frame(), full.lines(), full.vertices(), edges);
+    // the oracle
+    std::vector<std::array<double, 2>> points(p.number_of_vertices());
+    for(std::size_t v = 0; v < points.size(); ++v) points[v] = p.normalized_point(v);
+    std::map<std::pair<std::array<double, 2>, std::array<double, 2>>, std::size_t> edge_of;
+    std::vector<K::Segment_2> segments;
+    for(std::size_t e = 0; e < edges.size(); ++e) {
+      const auto& a = points[edges[e].source];
+      const auto& b = points[edges[e].target];
+      edge_of[std::minmax(a, b)] = e;
+      segments.emplace_back(K::Point_2(a[0], a[1]), K::Point_2(b[0], b[1]));
+    }
+    Arrangement arrangement;
+    CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
+    CHECK(arrangement.number_of_edges() == edges.size()); // no crossing: one arrangement edge per edge
+    auto edge_at = [&](Arrangement::Halfedge_const_handle h) {
+      const std::array<double, 2> a{{h->source()->point().x(), h->source()->point().y()}};
+      const std::array<double, 2> b{{h->target()->point().x(), h->target()->point().y()}};
+      return edge_of.at(std::minmax(a, b));
+    };
+    std::vector<std::size_t> expected;
+    for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
+      if(h->face() == h->twin()->face()) expected.push_back(edge_at(h));
+    for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
+      std::vector<Arrangement::Halfedge_const_handle> ccbs;
+      if(!f->is_unbounded()) ccbs.push_back(f->outer_ccb());
+      for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
+      for(auto start : ccbs) {
+        std::map<Arrangement::Vertex_const_handle, Arrangement::Halfedge_const_handle> arrival;
+        auto h = start;
+        do {
+          auto [it, first_time] = arrival.emplace(h->target(), h);
+          if(!first_time)
+            for(auto in : {it->second, Arrangement::Halfedge_const_handle(h)}) {
+              expected.push_back(edge_at(in));
+              expected.push_back(edge_at(in->next()));
+            }
+          h = h->next();
+        } while(h != start);
+      }
+    }
+    std::sort(expected.begin(), expected.end());
+    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+    CHECK(p.defective_edges() == expected);
+    CHECK(p.is_valid() == expected.empty());
+    invalid += expected.empty() ? 0 : 1;
+    ++total;
+  }
+  std::cout << "faces against the arrangement: " << invalid << " invalid of " << total << std::endl;
+  CHECK(invalid >= total / 4 && invalid < total); // both verdicts were exercised
+}
+
 int main()
 {
   test_simple_configurations();
   test_validity_check();
+  test_faces_against_arrangement();
   for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(random_segments(40, seed));
   for(unsigned seed = 1; seed <= 2; ++seed) test_kinetic_rules(mixed_segments(seed));
   test_against_line_arrangement();

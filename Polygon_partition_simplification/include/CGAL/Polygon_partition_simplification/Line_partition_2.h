@@ -5,11 +5,11 @@
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_2_H
 
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
 
 #include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
@@ -19,7 +19,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -242,8 +241,6 @@ public:
   {
     std::vector<std::size_t> result;
     analyze(&result);
-    std::sort(result.begin(), result.end());
-    result.erase(std::unique(result.begin(), result.end()), result.end());
     return result;
   }
 
@@ -280,7 +277,7 @@ public:
   /// some of them cross)
   std::size_t number_of_cells() const
   {
-    if(!crossing_pairs(false).empty()) {
+    if(has_crossings()) {
       const Exact_arrangement_2 arrangement = exact_arrangement();
       return arrangement.number_of_faces() - arrangement.number_of_unbounded_faces();
     }
@@ -316,7 +313,7 @@ private:
     return result;
   }
 
-  // the arrangement of the edges, which must not cross (`crossing_pairs()` empty)
+  // the arrangement of the edges, which must not cross (`has_crossings()` false)
   Planar_arrangement planar_arrangement() const
   {
     const auto segments = drawable_segments<Fast_kernel>();
@@ -325,147 +322,40 @@ private:
     return arrangement;
   }
 
+  // A view of the partition for internal::partition_defect()
+  struct Validity_view
+  {
+    const Line_partition_2& p;
+    std::size_t number_of_lines() const { return p.lines_.size(); }
+    const internal::Vector_3d& coefficients(std::size_t l) const { return p.lines_[l].coefficients; }
+    std::size_t number_of_vertices() const { return p.vertices_.size(); }
+    const std::vector<std::size_t>& vertex_lines(std::size_t v) const { return p.vertices_[v].lines; }
+    std::size_t number_of_edges() const { return p.edges_.size(); }
+    std::array<std::size_t, 3> edge(std::size_t e) const
+    {
+      return {{p.edges_[e].line, p.edges_[e].source, p.edges_[e].target}};
+    }
+  };
+
   // The first defect (empty if none); with `defective`, collects the edges of all defects.
   std::string analyze(std::vector<std::size_t>* defective) const
   {
-    std::string first;
-    auto report = [&](const std::string& what) { if(first.empty()) first = what; return defective == nullptr; };
-    auto all_edges = [&] { if(defective) for(std::size_t e = 0; e < edges_.size(); ++e) defective->push_back(e); };
-    std::vector<bool> has_edge(vertices_.size(), false);
-    for(std::size_t e = 0; e < edges_.size(); ++e) {
-      const Edge& edge = edges_[e];
-      if(edge.source == edge.target || edge.source >= vertices_.size() || edge.target >= vertices_.size()) {
-        all_edges();
-        return "edge " + std::to_string(e) + " does not join two points";
-      }
-      has_edge[edge.source] = has_edge[edge.target] = true;
-    }
-    std::vector<std::vector<std::size_t>> incident; // built at the first defect
-    auto mark = [&](std::size_t v) { // the edges at point v
-      if(!defective) return;
-      if(incident.empty()) {
-        incident.resize(vertices_.size());
-        for(std::size_t e = 0; e < edges_.size(); ++e) {
-          incident[edges_[e].source].push_back(e);
-          incident[edges_[e].target].push_back(e);
-        }
-      }
-      defective->insert(defective->end(), incident[v].begin(), incident[v].end());
-    };
-    std::vector<std::array<double, 2>> points(vertices_.size());
-    for(std::size_t v = 0; v < vertices_.size(); ++v) {
-      const auto& l = vertices_[v].lines;
-      for(std::size_t i = 0; i < l.size(); ++i)
-        if(l[i] >= lines_.size() || (i > 0 && l[i - 1] >= l[i])) {
-          all_edges();
-          return "point " + std::to_string(v) + " has invalid line indices";
-        }
-      if(l.size() < 2) { mark(v); if(report("point " + std::to_string(v) + " has fewer than two lines")) return first; continue; }
-      points[v] = normalized_point(v);
-      if(!std::isfinite(points[v][0]) || !std::isfinite(points[v][1])) {
-        mark(v);
-        if(report("point " + std::to_string(v) + " is at infinity")) return first;
-      }
-    }
-    for(std::size_t e = 0; e < edges_.size(); ++e)
-      for(std::size_t v : {edges_[e].source, edges_[e].target}) {
-        const auto& l = vertices_[v].lines;
-        if(!std::binary_search(l.begin(), l.end(), edges_[e].line)) {
-          all_edges();
-          return "edge " + std::to_string(e) + " ends at a point off its line";
-        }
-      }
-    if(!first.empty()) return first; // no geometry with points at infinity
-    std::vector<std::pair<std::array<double, 2>, std::size_t>> sorted;
-    for(std::size_t v = 0; v < vertices_.size(); ++v) sorted.emplace_back(points[v], v);
-    std::sort(sorted.begin(), sorted.end());
-    for(std::size_t i = 1; i < sorted.size(); ++i)
-      if(sorted[i].first == sorted[i - 1].first) {
-        mark(sorted[i].second);
-        mark(sorted[i - 1].second);
-        if(report("points " + std::to_string(sorted[i - 1].second) + " and " +
-                  std::to_string(sorted[i].second) + " coincide")) return first;
-      }
-    if(!first.empty()) return first; // the arrangement would merge coinciding points
-    const auto crossings = crossing_pairs(defective != nullptr);
-    if(!crossings.empty()) {
-      for(const auto& [e, f] : crossings) if(defective) { defective->push_back(e); defective->push_back(f); }
-      return "edges " + std::to_string(crossings[0].first) + " and " + std::to_string(crossings[0].second) +
-             " cross, overlap or pass through a point";
-    }
-    // no crossing: the arrangement has exactly the points and edges of the partition
-    const Planar_arrangement arrangement = planar_arrangement();
-    std::map<std::array<double, 2>, std::size_t> vertex_of;           // built at the first defect
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_of;
-    auto edge_at = [&](typename Planar_arrangement::Halfedge_const_handle h) {
-      if(edge_of.empty()) {
-        for(std::size_t v = 0; v < vertices_.size(); ++v)
-          if(has_edge[v]) vertex_of.emplace(points[v], v);
-        for(std::size_t e = 0; e < edges_.size(); ++e)
-          edge_of[std::minmax(edges_[e].source, edges_[e].target)] = e;
-      }
-      auto at = [&](const typename Fast_kernel::Point_2& p) { return vertex_of.at({{p.x(), p.y()}}); };
-      const std::size_t u = at(h->source()->point()), v = at(h->target()->point());
-      return edge_of.at(std::minmax(u, v));
-    };
-    for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
-      if(h->face() == h->twin()->face()) {
-        if(defective) defective->push_back(edge_at(h));
-        if(report("an edge dangles or bridges inside a cell")) return first;
-      }
-    for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
-      std::vector<typename Planar_arrangement::Halfedge_const_handle> ccbs;
-      if(!f->is_unbounded()) ccbs.push_back(f->outer_ccb());
-      for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
-      for(auto start : ccbs) {
-        std::vector<std::pair<const void*, typename Planar_arrangement::Halfedge_const_handle>> seen;
-        auto h = start;
-        do { seen.emplace_back(&*h->target(), h); h = h->next(); } while(h != start);
-        std::sort(seen.begin(), seen.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-        for(std::size_t i = 1; i < seen.size(); ++i)
-          if(seen[i].first == seen[i - 1].first) { // a pinched boundary: the edges at that point
-            if(defective) for(auto k : {i - 1, i}) { defective->push_back(edge_at(seen[k].second)); defective->push_back(edge_at(seen[k].second->next())); }
-            if(report("a cell boundary is not a simple polygon")) return first;
-          }
-      }
-    }
-    return first;
+    return internal::partition_defect(Validity_view{*this}, defective, [](const auto&, const auto&) { return true; });
   }
 
-  // Pairs of edges that meet elsewhere than at a common endpoint (boxes of the edges
-  // intersected with CGAL::box_intersection_d, then exact predicates); stops at the first
-  // pair unless `all`.
-  std::vector<std::pair<std::size_t, std::size_t>> crossing_pairs(bool all) const
+  // do two drawable edges meet elsewhere than at a common end?
+  bool has_crossings() const
   {
-    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
-    const auto [segments, edge_of] = drawable_segments<Fast_kernel>();
-    std::vector<Box> boxes;
-    for(std::size_t i = 0; i < segments.size(); ++i) boxes.emplace_back(segments[i].bbox(), i);
-    std::vector<std::pair<std::size_t, std::size_t>> result;
-    auto test = [&](const Box& x, const Box& y) {
-      if(!all && !result.empty()) return;
-      const Edge& e = edges_[edge_of[x.info()]];
-      const Edge& f = edges_[edge_of[y.info()]];
-      const typename Fast_kernel::Segment_2& se = segments[x.info()];
-      const typename Fast_kernel::Segment_2& sf = segments[y.info()];
-      std::size_t common = 0, shared = 0;
-      for(std::size_t a : {e.source, e.target})
-        for(std::size_t b : {f.source, f.target})
-          if(a == b) { ++common; shared = a; }
-      bool bad;
-      if(common == 0) bad = CGAL::do_intersect(se, sf);
-      else if(common == 2) bad = true;
-      else { // they share an endpoint: they must not overlap
-        const auto& oe = e.source == shared ? se.target() : se.source();
-        const auto& of = f.source == shared ? sf.target() : sf.source();
-        bad = se.has_on(of) || sf.has_on(oe);
-      }
-      if(bad) result.emplace_back(edge_of[x.info()], edge_of[y.info()]);
-    };
-    // cutoff 200 instead of 10: the edges of a partition are small and many boxes are flat, and
-    // scanning small subsets directly halved the time of this check on the benchmark
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), test, std::ptrdiff_t(200));
-    return result;
+    std::vector<std::array<double, 2>> points(vertices_.size());
+    for(std::size_t v = 0; v < vertices_.size(); ++v) points[v] = normalized_point(v);
+    auto finite = [](const std::array<double, 2>& x) { return std::isfinite(x[0]) && std::isfinite(x[1]); };
+    std::vector<std::array<std::size_t, 2>> drawable;
+    for(const Edge& e : edges_) {
+      const auto& a = points[e.source];
+      const auto& b = points[e.target];
+      if(finite(a) && finite(b) && a != b) drawable.push_back({e.source, e.target});
+    }
+    return !internal::crossing_edge_pairs(points, drawable, false, [](const auto&, const auto&) { return true; }).empty();
   }
 
   Frame frame_;

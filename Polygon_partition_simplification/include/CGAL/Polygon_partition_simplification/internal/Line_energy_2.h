@@ -15,6 +15,8 @@
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -48,7 +50,7 @@ struct Line_state
   std::size_t number_of_segments = 0;
   bool is_fixed = false;
   bool is_frozen = false;     // kept still for one round (it took part in an invalid move)
-  std::vector<std::uint32_t> members; // lines of the round's start merged into this one
+  boost::container::small_vector<std::uint32_t, 2> members; // lines of the round's start merged into this one
   bool is_still() const { return is_fixed || is_frozen; }
 };
 

@@ -31,6 +31,8 @@
 #include <CGAL/Polygon_partition_simplification/internal/Line_energy_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -45,10 +47,13 @@ namespace internal {
 
 using Index = std::uint32_t;
 
+// the lines through a point (two, or a few after points merged): no allocation up to four
+using Point_lines = boost::container::small_vector<Index, 4>;
+
 struct Working_partition
 {
   std::vector<Line_state> lines;
-  std::vector<std::vector<Index>> vertex_lines; // sorted, distinct
+  std::vector<Point_lines> vertex_lines; // sorted, distinct
   std::vector<std::array<Index, 3>> edges;      // line, u < v
 
   std::array<double, 2> point(Index v) const
@@ -57,6 +62,18 @@ struct Working_partition
       return lines[l].coefficients;
     });
   }
+};
+
+// Working_partition as seen by partition_defect()
+struct Working_partition_view
+{
+  const Working_partition& w;
+  std::size_t number_of_lines() const { return w.lines.size(); }
+  const Vector_3d& coefficients(std::size_t l) const { return w.lines[l].coefficients; }
+  std::size_t number_of_vertices() const { return w.vertex_lines.size(); }
+  const Point_lines& vertex_lines(std::size_t v) const { return w.vertex_lines[v]; }
+  std::size_t number_of_edges() const { return w.edges.size(); }
+  std::array<std::size_t, 3> edge(std::size_t e) const { return {{w.edges[e][0], w.edges[e][1], w.edges[e][2]}}; }
 };
 
 struct Reduction_counts
@@ -389,7 +406,7 @@ private:
     }
 
     std::vector<Index> new_vertex(nv, Index(-1));
-    std::vector<std::vector<Index>> vertex_lines;
+    std::vector<Point_lines> vertex_lines;
     for(Index v = 0; v < nv; ++v) {
       const Index r = find_vertex(v);
       if(new_vertex[r] == Index(-1)) { new_vertex[r] = Index(vertex_lines.size()); vertex_lines.emplace_back(); }
@@ -502,7 +519,7 @@ private:
     std::vector<Index> degree(w_.vertex_lines.size(), 0);
     for(const auto& e : w_.edges) { ++degree[e[1]]; ++degree[e[2]]; }
     std::vector<Index> renumber(w_.vertex_lines.size(), Index(-1));
-    std::vector<std::vector<Index>> kept;
+    std::vector<Point_lines> kept;
     for(Index v = 0; v < w_.vertex_lines.size(); ++v)
       if(degree[v] > 0) { renumber[v] = Index(kept.size()); kept.push_back(std::move(w_.vertex_lines[v])); }
     w_.vertex_lines = std::move(kept);

@@ -1,0 +1,280 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_PARTITION_VALIDITY_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_PARTITION_VALIDITY_2_H
+
+// The exact validity check of a partition in line representation (the points are computed in
+// double precision from their lines, and every geometric decision on these points is exact):
+// 1. combinatorics: every point has at least two lines, every edge joins two points of its line;
+// 2. every point is finite and no two coincide;
+// 3. no two edges meet elsewhere than at a common end: the boxes of the edges are intersected
+//    with CGAL::box_intersection_d, then exact segment predicates;
+// 4. every edge separates two different cells and every cell boundary is a simple polygon.
+//    Once 2 and 3 hold, the edges form a plane graph whose faces are traced by the facial walks
+//    of its rotation system: the edges around each point sorted by direction with exact
+//    orientation predicates, and the walk leaves a point by the edge that follows, clockwise,
+//    the edge it came in by. For each connected part of the graph, one walk goes around each of
+//    its faces (for a face with holes, each hole is the walk of another part), so an edge bounds
+//    the same face on both sides exactly when both its sides are on the same walk, and a cell
+//    boundary is simple exactly when no walk passes twice through a point: the same decisions
+//    as with the faces of CGAL's arrangement of the edges, without building it.
+//
+// A caller that knows that some segments are pairwise free of crossings (the edges of a valid
+// state) passes `may_cross(a, b)`, false for the segment from a to b if it is one of them:
+// step 3 then only tests the pairs with an edge for which it is true (or that joins the same
+// two points as another edge).
+
+#include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
+
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+// The pairs of edges (indices into `edges`: (u, v) point pairs) that meet elsewhere than at a
+// common end, among the pairs with an edge for which `may_cross(a, b)` (its ends' coordinates)
+// is true; stops at the first pair unless `all`. `points`: the coordinates (finite for the
+// ends of every edge given).
+template <class MayCross>
+std::vector<std::pair<std::size_t, std::size_t>>
+crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
+                    const std::vector<std::array<std::size_t, 2>>& edges, bool all, const MayCross& may_cross)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+  auto point = [&](std::size_t v) { return K::Point_2(points[v][0], points[v][1]); };
+  std::vector<Box> suspects, others;
+  {
+    std::vector<std::pair<std::array<std::size_t, 2>, std::size_t>> known; // (sorted ends, edge)
+    for(std::size_t e = 0; e < edges.size(); ++e) {
+      if(may_cross(points[edges[e][0]], points[edges[e][1]]))
+        suspects.emplace_back(point(edges[e][0]).bbox() + point(edges[e][1]).bbox(), e);
+      else
+        known.push_back({{{std::min(edges[e][0], edges[e][1]), std::max(edges[e][0], edges[e][1])}}, e});
+    }
+    std::sort(known.begin(), known.end());
+    for(std::size_t i = 0; i < known.size(); ++i) {
+      const bool twin = (i > 0 && known[i - 1].first == known[i].first) ||
+                        (i + 1 < known.size() && known[i + 1].first == known[i].first);
+      const std::size_t e = known[i].second;
+      (twin ? suspects : others).emplace_back(point(edges[e][0]).bbox() + point(edges[e][1]).bbox(), e);
+    }
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> result;
+  auto test = [&](const Box& x, const Box& y) {
+    if(!all && !result.empty()) return;
+    const auto& e = edges[x.info()];
+    const auto& f = edges[y.info()];
+    const K::Segment_2 se(point(e[0]), point(e[1])), sf(point(f[0]), point(f[1]));
+    std::size_t common = 0, shared = 0;
+    for(std::size_t a : e)
+      for(std::size_t b : f)
+        if(a == b) { ++common; shared = a; }
+    bool bad;
+    if(common == 0) bad = CGAL::do_intersect(se, sf);
+    else if(common == 2) bad = true;
+    else { // they share an end: they must not overlap
+      const K::Point_2 oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
+      bad = se.has_on(of) || sf.has_on(oe);
+    }
+    if(bad) result.emplace_back(std::min(x.info(), y.info()), std::max(x.info(), y.info()));
+  };
+  // cutoff 200 instead of 10: the edges of a partition are small and many boxes are flat, and
+  // scanning small subsets directly halved the time of this check on the benchmark
+  const std::ptrdiff_t cutoff = 200;
+  if(!others.empty() && !suspects.empty()) {
+    std::vector<Box> copy = suspects;
+    CGAL::box_intersection_d(copy.begin(), copy.end(), others.begin(), others.end(), test, cutoff);
+  }
+  CGAL::box_self_intersection_d(suspects.begin(), suspects.end(), test, cutoff);
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+// The facial walks of a plane graph (no crossing, distinct points): appends to `bridges` the
+// edges with the same walk on both sides and to `pinched` the edges around the points that a
+// walk passes twice (the edges in and out of both passages).
+inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points,
+                                const std::vector<std::array<std::size_t, 2>>& edges,
+                                std::vector<std::size_t>& bridges, std::vector<std::size_t>& pinched)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const std::size_t nv = points.size(), nh = 2 * edges.size();
+  // half-edge h = 2e + s goes from edges[e][s] to edges[e][1 - s]
+  auto source = [&](std::size_t h) { return edges[h / 2][h % 2]; };
+  auto target = [&](std::size_t h) { return edges[h / 2][1 - h % 2]; };
+  std::vector<std::uint32_t> first(nv + 1, 0);
+  for(std::size_t h = 0; h < nh; ++h) ++first[source(h) + 1];
+  for(std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  std::vector<std::uint32_t> around(nh); // outgoing half-edges, point by point
+  {
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    for(std::size_t h = 0; h < nh; ++h) around[next[source(h)]++] = std::uint32_t(h);
+  }
+  // counterclockwise order around each point, from the direction of the positive x axis
+  // (exact: coordinate comparisons and orientation predicates on the double points)
+  for(std::size_t v = 0; v < nv; ++v) {
+    const K::Point_2 p(points[v][0], points[v][1]);
+    auto upper = [&](std::size_t h) { // direction in [0, pi)
+      const auto& q = points[target(h)];
+      return q[1] > points[v][1] || (q[1] == points[v][1] && q[0] > points[v][0]);
+    };
+    std::sort(around.begin() + first[v], around.begin() + first[v + 1], [&](std::uint32_t a, std::uint32_t b) {
+      const bool ua = upper(a), ub = upper(b);
+      if(ua != ub) return ua;
+      const auto& qa = points[target(a)];
+      const auto& qb = points[target(b)];
+      return CGAL::orientation(p, K::Point_2(qa[0], qa[1]), K::Point_2(qb[0], qb[1])) == CGAL::LEFT_TURN;
+    });
+  }
+  std::vector<std::uint32_t> position(nh);
+  for(std::size_t v = 0; v < nv; ++v)
+    for(std::uint32_t i = first[v]; i < first[v + 1]; ++i) position[around[i]] = i;
+  // next(h): at the target of h, the half-edge that follows the twin of h clockwise
+  auto next = [&](std::size_t h) -> std::size_t {
+    const std::size_t twin = h ^ 1, v = source(twin);
+    const std::uint32_t i = position[twin];
+    return around[i == first[v] ? first[v + 1] - 1 : i - 1];
+  };
+  const std::uint32_t none = std::uint32_t(-1);
+  std::vector<std::uint32_t> walk_of(nh, none);
+  std::vector<std::uint32_t> last_walk(nv, none), arrival(nv, none); // per point, in the current walk
+  std::uint32_t walks = 0;
+  for(std::size_t start = 0; start < nh; ++start) {
+    if(walk_of[start] != none) continue;
+    std::size_t h = start;
+    do {
+      walk_of[h] = walks;
+      const std::size_t v = target(h);
+      if(last_walk[v] == walks) // a second passage through v
+        for(std::size_t in : {std::size_t(arrival[v]), h}) {
+          pinched.push_back(in / 2);
+          pinched.push_back(next(in) / 2);
+        }
+      last_walk[v] = walks;
+      arrival[v] = std::uint32_t(h);
+      h = next(h);
+    } while(h != start);
+    ++walks;
+  }
+  for(std::size_t e = 0; e < edges.size(); ++e)
+    if(walk_of[2 * e] == walk_of[2 * e + 1]) bridges.push_back(e);
+}
+
+// The first defect of a partition (empty if it is valid); with `defective`, the edges of all
+// defects of the first kind found (sorted, distinct). `View` gives number_of_lines(),
+// coefficients(l), number_of_vertices(), vertex_lines(v) (sorted indices), number_of_edges()
+// and edge(e) = {line, u, v}; `may_cross(a, b)`: see above.
+template <class View, class MayCross>
+std::string partition_defect(const View& view, std::vector<std::size_t>* defective, const MayCross& may_cross)
+{
+  const std::size_t nl = view.number_of_lines(), nv = view.number_of_vertices(), ne = view.number_of_edges();
+  std::string first;
+  auto finish = [&](std::string what) {
+    if(defective) {
+      std::sort(defective->begin(), defective->end());
+      defective->erase(std::unique(defective->begin(), defective->end()), defective->end());
+    }
+    return what;
+  };
+  auto report = [&](const std::string& what) { if(first.empty()) first = what; return defective == nullptr; };
+  auto all_edges = [&] { if(defective) for(std::size_t e = 0; e < ne; ++e) defective->push_back(e); };
+  std::vector<std::array<std::size_t, 2>> ends(ne);
+  for(std::size_t e = 0; e < ne; ++e) {
+    const auto edge = view.edge(e);
+    if(edge[1] == edge[2] || edge[1] >= nv || edge[2] >= nv) {
+      all_edges();
+      return finish("edge " + std::to_string(e) + " does not join two points");
+    }
+    ends[e] = {edge[1], edge[2]};
+  }
+  std::vector<std::vector<std::size_t>> incident; // built at the first defect
+  auto mark = [&](std::size_t v) { // the edges at point v
+    if(!defective) return;
+    if(incident.empty()) {
+      incident.resize(nv);
+      for(std::size_t e = 0; e < ne; ++e) {
+        incident[ends[e][0]].push_back(e);
+        incident[ends[e][1]].push_back(e);
+      }
+    }
+    defective->insert(defective->end(), incident[v].begin(), incident[v].end());
+  };
+  std::vector<std::array<double, 2>> points(nv);
+  for(std::size_t v = 0; v < nv; ++v) {
+    const auto& l = view.vertex_lines(v);
+    for(std::size_t i = 0; i < l.size(); ++i)
+      if(l[i] >= nl || (i > 0 && l[i - 1] >= l[i])) {
+        all_edges();
+        return finish("point " + std::to_string(v) + " has invalid line indices");
+      }
+    if(l.size() < 2) {
+      mark(v);
+      if(report("point " + std::to_string(v) + " has fewer than two lines")) return finish(first);
+      continue;
+    }
+    points[v] = point_of_lines(l, [&](std::size_t x) -> const Vector_3d& { return view.coefficients(x); });
+    if(!std::isfinite(points[v][0]) || !std::isfinite(points[v][1])) {
+      mark(v);
+      if(report("point " + std::to_string(v) + " is at infinity")) return finish(first);
+    }
+  }
+  for(std::size_t e = 0; e < ne; ++e)
+    for(std::size_t v : ends[e]) {
+      const auto& l = view.vertex_lines(v);
+      if(!std::binary_search(l.begin(), l.end(), view.edge(e)[0])) {
+        all_edges();
+        return finish("edge " + std::to_string(e) + " ends at a point off its line");
+      }
+    }
+  if(!first.empty()) return finish(first); // no geometry with points at infinity
+  {
+    std::vector<std::pair<std::array<double, 2>, std::size_t>> sorted;
+    sorted.reserve(nv);
+    for(std::size_t v = 0; v < nv; ++v) sorted.emplace_back(points[v], v);
+    std::sort(sorted.begin(), sorted.end());
+    for(std::size_t i = 1; i < sorted.size(); ++i)
+      if(sorted[i].first == sorted[i - 1].first) {
+        mark(sorted[i].second);
+        mark(sorted[i - 1].second);
+        if(report("points " + std::to_string(sorted[i - 1].second) + " and " +
+                  std::to_string(sorted[i].second) + " coincide")) return finish(first);
+      }
+  }
+  if(!first.empty()) return finish(first); // the walks need distinct points
+  const auto crossings = crossing_edge_pairs(points, ends, defective != nullptr, may_cross);
+  if(!crossings.empty()) {
+    if(defective)
+      for(const auto& [e, f] : crossings) { defective->push_back(e); defective->push_back(f); }
+    return finish("edges " + std::to_string(crossings[0].first) + " and " + std::to_string(crossings[0].second) +
+                  " cross, overlap or pass through a point");
+  }
+  std::vector<std::size_t> bridges, pinched;
+  facial_walk_defects(points, ends, bridges, pinched);
+  if(!bridges.empty()) {
+    if(defective) defective->insert(defective->end(), bridges.begin(), bridges.end());
+    if(report("an edge dangles or bridges inside a cell")) return finish(first);
+  }
+  if(!pinched.empty()) {
+    if(defective) defective->insert(defective->end(), pinched.begin(), pinched.end());
+    report("a cell boundary is not a simple polygon");
+  }
+  return finish(first);
+}
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_PARTITION_VALIDITY_2_H
