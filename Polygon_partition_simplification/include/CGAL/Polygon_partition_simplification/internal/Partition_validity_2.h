@@ -8,8 +8,8 @@
 // double precision from their lines, and every geometric decision on these points is exact):
 // 1. combinatorics: every point has at least two lines, every edge joins two points of its line;
 // 2. every point is finite and no two coincide;
-// 3. no two edges meet elsewhere than at a common end: the boxes of the edges are intersected
-//    with CGAL::box_intersection_d, then exact segment predicates;
+// 3. no two edges meet elsewhere than at a common end: the edges near each other are found in
+//    a grid (see Segment_grid_2.h), then decided with exact segment predicates;
 // 4. every edge separates two different cells and every cell boundary is a simple polygon.
 //    Once 2 and 3 hold, the edges form a plane graph whose faces are traced by the facial walks
 //    of its rotation system: the edges around each point sorted by direction with exact
@@ -26,8 +26,8 @@
 // two points as another edge).
 
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -52,52 +52,67 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
                     const std::vector<std::array<std::size_t, 2>>& edges, bool all, const MayCross& may_cross)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+  std::vector<std::pair<std::size_t, std::size_t>> result;
+  if(edges.empty()) return result;
   auto point = [&](std::size_t v) { return K::Point_2(points[v][0], points[v][1]); };
-  std::vector<Box> suspects, others;
+  std::vector<std::array<double, 4>> segments(edges.size());
+  std::array<double, 2> low = points[edges[0][0]], high = low;
+  for(std::size_t e = 0; e < edges.size(); ++e) {
+    const auto& a = points[edges[e][0]];
+    const auto& b = points[edges[e][1]];
+    segments[e] = {{a[0], a[1], b[0], b[1]}};
+    for(int c = 0; c < 2; ++c) {
+      low[c] = std::min({low[c], a[c], b[c]});
+      high[c] = std::max({high[c], a[c], b[c]});
+    }
+  }
+  // the suspects; an edge joining the same two points as another is one
+  std::vector<bool> suspect(edges.size());
   {
     std::vector<std::pair<std::array<std::size_t, 2>, std::size_t>> known; // (sorted ends, edge)
     for(std::size_t e = 0; e < edges.size(); ++e) {
-      if(may_cross(points[edges[e][0]], points[edges[e][1]]))
-        suspects.emplace_back(point(edges[e][0]).bbox() + point(edges[e][1]).bbox(), e);
-      else
+      suspect[e] = may_cross(points[edges[e][0]], points[edges[e][1]]);
+      if(!suspect[e])
         known.push_back({{{std::min(edges[e][0], edges[e][1]), std::max(edges[e][0], edges[e][1])}}, e});
     }
     std::sort(known.begin(), known.end());
-    for(std::size_t i = 0; i < known.size(); ++i) {
-      const bool twin = (i > 0 && known[i - 1].first == known[i].first) ||
-                        (i + 1 < known.size() && known[i + 1].first == known[i].first);
-      const std::size_t e = known[i].second;
-      (twin ? suspects : others).emplace_back(point(edges[e][0]).bbox() + point(edges[e][1]).bbox(), e);
-    }
+    for(std::size_t i = 1; i < known.size(); ++i)
+      if(known[i - 1].first == known[i].first) suspect[known[i - 1].second] = suspect[known[i].second] = true;
   }
-  std::vector<std::pair<std::size_t, std::size_t>> result;
-  auto test = [&](const Box& x, const Box& y) {
-    if(!all && !result.empty()) return;
-    const auto& e = edges[x.info()];
-    const auto& f = edges[y.info()];
+  auto test = [&](std::size_t i, std::size_t j) {
+    const auto& e = edges[i];
+    const auto& f = edges[j];
     const K::Segment_2 se(point(e[0]), point(e[1])), sf(point(f[0]), point(f[1]));
     std::size_t common = 0, shared = 0;
     for(std::size_t a : e)
       for(std::size_t b : f)
         if(a == b) { ++common; shared = a; }
-    bool bad;
-    if(common == 0) bad = CGAL::do_intersect(se, sf);
-    else if(common == 2) bad = true;
-    else { // they share an end: they must not overlap
-      const K::Point_2 oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
-      bad = se.has_on(of) || sf.has_on(oe);
-    }
-    if(bad) result.emplace_back(std::min(x.info(), y.info()), std::max(x.info(), y.info()));
+    if(common == 0) return CGAL::do_intersect(se, sf);
+    if(common == 2) return true;
+    // they share an end: they must not overlap
+    const K::Point_2 oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
+    return se.has_on(of) || sf.has_on(oe);
   };
-  // cutoff 200 instead of 10: the edges of a partition are small and many boxes are flat, and
-  // scanning small subsets directly halved the time of this check on the benchmark
-  const std::ptrdiff_t cutoff = 200;
-  if(!others.empty() && !suspects.empty()) {
-    std::vector<Box> copy = suspects;
-    CGAL::box_intersection_d(copy.begin(), copy.end(), others.begin(), others.end(), test, cutoff);
+  // Two edges that meet share a point, which lies in a cell where both are listed: each suspect
+  // is tested against the edges listed in its cells whose boxes meet its box (once per pair).
+  const Segment_grid_2 grid(segments, low, high);
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> seen(edges.size(), none); // the last suspect that met an edge
+  for(std::size_t i = 0; i < edges.size() && (all || result.empty()); ++i) {
+    if(!suspect[i]) continue;
+    const auto& s = segments[i];
+    grid.for_each_cell(s, [&](std::size_t cell) {
+      grid.for_each_in_cell(cell, [&](std::uint32_t j) {
+        if(j == i || seen[j] == i || (suspect[j] && j < i)) return; // a pair of suspects once
+        seen[j] = i;
+        const auto& t = segments[j];
+        if(std::max(s[0], s[2]) < std::min(t[0], t[2]) || std::max(t[0], t[2]) < std::min(s[0], s[2]) ||
+           std::max(s[1], s[3]) < std::min(t[1], t[3]) || std::max(t[1], t[3]) < std::min(s[1], s[3]))
+          return; // the boxes are disjoint
+        if((all || result.empty()) && test(i, j)) result.emplace_back(std::min<std::size_t>(i, j), std::max<std::size_t>(i, j));
+      });
+    });
   }
-  CGAL::box_self_intersection_d(suspects.begin(), suspects.end(), test, cutoff);
   std::sort(result.begin(), result.end());
   return result;
 }

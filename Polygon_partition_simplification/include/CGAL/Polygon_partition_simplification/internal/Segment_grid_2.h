@@ -5,8 +5,8 @@
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_SEGMENT_GRID_2_H
 
 // A uniform grid of square cells over a rectangle, each cell listing the segments that pass
-// near it, to visit segments by increasing distance from a point, ring of cells by ring of
-// cells. Every segment is listed in every cell it meets (and possibly in a few neighbouring
+// near it: to visit segments by increasing distance from a point, ring of cells by ring of
+// cells, or the segments near a segment. Every segment is listed in every cell it meets (and possibly in a few neighbouring
 // ones: the test is conservative), so after the rings 0 to k around the cell of a point P
 // every segment closer to P than (k - 1) times the cell size has been visited, whatever the
 // rounding of the cell indices. About one cell per segment.
@@ -38,20 +38,6 @@ public:
     columns_ = count_of(width / cell_);
     rows_ = count_of(height / cell_);
     std::vector<std::uint32_t> count(std::size_t(columns_) * rows_ + 1, 0);
-    auto for_each_cell = [&](const std::array<double, 4>& s, auto&& f) {
-      const int x0 = column(std::min(s[0], s[2])), x1 = column(std::max(s[0], s[2]));
-      const int y0 = row(std::min(s[1], s[3])), y1 = row(std::max(s[1], s[3]));
-      const double dx = s[2] - s[0], dy = s[3] - s[1];
-      const double length = std::sqrt(dx * dx + dy * dy);
-      for(int y = y0; y <= y1; ++y)
-        for(int x = x0; x <= x1; ++x) {
-          // distance from the cell's center to the segment's line, against a bound larger than
-          // the half-diagonal of a cell: the cell may meet the segment
-          const double cx = low_[0] + (x + 0.5) * cell_, cy = low_[1] + (y + 0.5) * cell_;
-          if(length > 0 && std::abs(dx * (cy - s[1]) - dy * (cx - s[0])) > cell_ * length) continue;
-          f(std::size_t(y) * columns_ + x);
-        }
-    };
     for(const auto& s : segments) for_each_cell(s, [&](std::size_t c) { ++count[c + 1]; });
     for(std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
     first_ = count;
@@ -61,6 +47,31 @@ public:
   }
 
   double cell_size() const { return cell_; }
+
+  // calls f(cell) for the cells that segment s may meet (all those it meets)
+  template <class F>
+  void for_each_cell(const std::array<double, 4>& s, F&& f) const
+  {
+    const int x0 = column(std::min(s[0], s[2])), x1 = column(std::max(s[0], s[2]));
+    const int y0 = row(std::min(s[1], s[3])), y1 = row(std::max(s[1], s[3]));
+    const double dx = s[2] - s[0], dy = s[3] - s[1];
+    const double length = std::sqrt(dx * dx + dy * dy);
+    for(int y = y0; y <= y1; ++y)
+      for(int x = x0; x <= x1; ++x) {
+        // distance from the cell's center to the segment's line, against a bound larger than
+        // the half-diagonal of a cell: the cell may meet the segment
+        const double cx = low_[0] + (x + 0.5) * cell_, cy = low_[1] + (y + 0.5) * cell_;
+        if(length > 0 && std::abs(dx * (cy - s[1]) - dy * (cx - s[0])) > cell_ * length) continue;
+        f(std::size_t(y) * columns_ + x);
+      }
+  }
+
+  // calls f(segment) for the segments listed in cell c
+  template <class F>
+  void for_each_in_cell(std::size_t c, F&& f) const
+  {
+    for(std::uint32_t e = first_[c]; e < first_[c + 1]; ++e) f(entries_[e]);
+  }
   int column(double x) const { return std::clamp(int(std::floor((x - low_[0]) / cell_)), 0, columns_ - 1); }
   int row(double y) const { return std::clamp(int(std::floor((y - low_[1]) / cell_)), 0, rows_ - 1); }
 
@@ -77,8 +88,7 @@ public:
   {
     auto cell = [&](int cx, int cy) {
       if(cx < 0 || cy < 0 || cx >= columns_ || cy >= rows_) return;
-      const std::size_t c = std::size_t(cy) * columns_ + cx;
-      for(std::uint32_t e = first_[c]; e < first_[c + 1]; ++e) f(entries_[e]);
+      for_each_in_cell(std::size_t(cy) * columns_ + cx, f);
     };
     if(k == 0) { cell(x, y); return; }
     for(int cx = x - k; cx <= x + k; ++cx) { cell(cx, y - k); cell(cx, y + k); }
