@@ -443,20 +443,38 @@ private:
       const Vector_3d& L = w_.lines[l].coefficients;
       return -L[1] * points[v][0] + L[0] * points[v][1];
     };
-    // a single-line point has no coordinates of its own: it is where its edges' other ends are
-    std::vector<std::vector<std::pair<Index, Index>>> line_edges(nl); // (u, v) per line
-    for(const auto& e : old_edges) line_edges[e[0]].push_back({e[1], e[2]});
-    std::vector<std::vector<Index>> line_points(nl);
+    // per line (compressed rows): its old edges (u, v), and its points on at least two lines
+    std::vector<Index> first_edge(nl + 1, 0), first_point(nl + 1, 0);
+    for(const auto& e : old_edges) ++first_edge[e[0] + 1];
     for(Index v = 0; v < nv; ++v)
       if(w_.vertex_lines[v].size() >= 2)
-        for(Index l : w_.vertex_lines[v]) line_points[l].push_back(v);
+        for(Index l : w_.vertex_lines[v]) ++first_point[l + 1];
+    for(std::size_t l = 0; l < nl; ++l) {
+      first_edge[l + 1] += first_edge[l];
+      first_point[l + 1] += first_point[l];
+    }
+    std::vector<std::pair<Index, Index>> line_edges(old_edges.size());
+    std::vector<Index> line_points(first_point[nl]);
+    {
+      std::vector<Index> next(first_edge.begin(), first_edge.end() - 1);
+      for(const auto& e : old_edges) line_edges[next[e[0]]++] = {e[1], e[2]};
+      next.assign(first_point.begin(), first_point.end() - 1);
+      for(Index v = 0; v < nv; ++v)
+        if(w_.vertex_lines[v].size() >= 2)
+          for(Index l : w_.vertex_lines[v]) line_points[next[l]++] = v;
+    }
     std::vector<std::array<Index, 3>> edges;
+    std::vector<std::pair<double, double>> intervals, unions; // buffers reused from line to line
+    std::vector<std::pair<Index, Index>> through;
+    std::vector<std::pair<double, Index>> sorted;
     for(Index l = 0; l < nl; ++l) {
       // intervals with real points at both ends (edges to single-line points are dropped first
       // by extending through them: a single-line point joins the intervals of its edges)
-      std::vector<std::pair<double, double>> intervals;
-      std::vector<std::pair<Index, Index>> through; // (single-line point, real point)
-      for(const auto& [u, v] : line_edges[l]) {
+      // (a single-line point has no coordinates of its own: it is where its edges' other ends are)
+      intervals.clear();
+      through.clear(); // (single-line point, real point)
+      for(Index k = first_edge[l]; k < first_edge[l + 1]; ++k) {
+        const auto [u, v] = line_edges[k];
         const bool ru = w_.vertex_lines[u].size() >= 2, rv = w_.vertex_lines[v].size() >= 2;
         if(ru && rv) {
           const double a = parameter(l, u), b = parameter(l, v);
@@ -472,13 +490,14 @@ private:
         }
       if(intervals.empty()) continue;
       std::sort(intervals.begin(), intervals.end());
-      std::vector<std::pair<double, double>> unions{intervals[0]};
+      unions.assign(1, intervals[0]);
       for(const auto& i : intervals) {
         if(i.first <= unions.back().second) unions.back().second = std::max(unions.back().second, i.second);
         else unions.push_back(i);
       }
-      std::vector<std::pair<double, Index>> sorted;
-      for(Index v : line_points[l]) sorted.push_back({parameter(l, v), v});
+      sorted.clear();
+      for(Index k = first_point[l]; k < first_point[l + 1]; ++k)
+        sorted.push_back({parameter(l, line_points[k]), line_points[k]});
       std::sort(sorted.begin(), sorted.end());
       std::size_t k = 0;
       for(const auto& [lo, hi] : unions) {
