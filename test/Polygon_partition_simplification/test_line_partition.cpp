@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_partition_simplification/IO/GeoJSON.h>
 #include <CGAL/Polygon_partition_simplification/line_partition_from_geometry_2.h>
 #include <CGAL/kinetic_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
 #include <algorithm>
 #include <cassert>
@@ -456,11 +457,44 @@ void test_faces_against_arrangement()
   CHECK(invalid >= total / 4 && invalid < total); // both verdicts were exercised
 }
 
+// The grid used by the kinetic propagation and the validity check lists every segment in the
+// cell of each of its points (checked on points sampled along random segments, short and long,
+// axis-parallel and not, in a grid whose cells are much smaller than the long ones).
+void test_segment_grid()
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-50, 50), v(-1, 1);
+  std::vector<std::array<double, 4>> segments;
+  for(int i = 0; i < 300; ++i) {
+    const double x = u(rng), y = u(rng);
+    const double scale = i % 10 == 0 ? 60 : 1;
+    std::array<double, 4> s{{x, y, x + scale * v(rng), y + scale * v(rng)}};
+    if(i % 7 == 0) s[3] = s[1]; // horizontal
+    if(i % 11 == 0) s[2] = s[0]; // vertical
+    for(double& c : s) c = std::clamp(c, -100., 100.);
+    segments.push_back(s);
+  }
+  const PPS::internal::Segment_grid_2 grid(segments, {{-100, -100}}, {{100, 100}});
+  CHECK(grid.cell_size() < 20);
+  for(std::uint32_t i = 0; i < segments.size(); ++i) {
+    const auto& s = segments[i];
+    for(int k = 0; k <= 1000; ++k) {
+      const double t = k / 1000.;
+      const double x = k == 1000 ? s[2] : s[0] + t * (s[2] - s[0]), y = k == 1000 ? s[3] : s[1] + t * (s[3] - s[1]);
+      const int cx = grid.column(x), cy = grid.row(y);
+      bool listed = false;
+      grid.for_each_in_ring(cx, cy, 0, [&](std::uint32_t j) { listed = listed || j == i; });
+      CHECK(listed);
+    }
+  }
+}
+
 int main()
 {
   test_simple_configurations();
   test_validity_check();
   test_faces_against_arrangement();
+  test_segment_grid();
   for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(random_segments(40, seed));
   for(unsigned seed = 1; seed <= 2; ++seed) test_kinetic_rules(mixed_segments(seed));
   test_against_line_arrangement();

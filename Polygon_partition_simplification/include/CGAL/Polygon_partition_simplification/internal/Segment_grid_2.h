@@ -48,7 +48,10 @@ public:
 
   double cell_size() const { return cell_; }
 
-  // calls f(cell) for the cells that segment s may meet (all those it meets)
+  // Calls f(cell) for the cells that segment s may meet (all those it meets): row by row, the
+  // columns where the segment is within the row's band, one more on each side for rounding,
+  // and among them the cells whose center is closer to the segment's line than a cell's side
+  // (more than the half-diagonal). About 3 cells per row and one per column it crosses.
   template <class F>
   void for_each_cell(const std::array<double, 4>& s, F&& f) const
   {
@@ -56,14 +59,23 @@ public:
     const int y0 = row(std::min(s[1], s[3])), y1 = row(std::max(s[1], s[3]));
     const double dx = s[2] - s[0], dy = s[3] - s[1];
     const double length = std::sqrt(dx * dx + dy * dy);
-    for(int y = y0; y <= y1; ++y)
-      for(int x = x0; x <= x1; ++x) {
-        // distance from the cell's center to the segment's line, against a bound larger than
-        // the half-diagonal of a cell: the cell may meet the segment
+    for(int y = y0; y <= y1; ++y) {
+      int from = x0, to = x1;
+      if(dy != 0 && y0 < y1) { // the x extent of the part of s in the band of row y
+        auto x_at = [&](double band_y) {
+          const double t = std::clamp((band_y - s[1]) / dy, 0., 1.);
+          return s[0] + t * dx;
+        };
+        const double xa = x_at(low_[1] + y * cell_), xb = x_at(low_[1] + (y + 1) * cell_);
+        from = std::max(x0, column(std::min(xa, xb)) - 1);
+        to = std::min(x1, column(std::max(xa, xb)) + 1);
+      }
+      for(int x = from; x <= to; ++x) {
         const double cx = low_[0] + (x + 0.5) * cell_, cy = low_[1] + (y + 0.5) * cell_;
         if(length > 0 && std::abs(dx * (cy - s[1]) - dy * (cx - s[0])) > cell_ * length) continue;
         f(std::size_t(y) * columns_ + x);
       }
+    }
   }
 
   // calls f(segment) for the segments listed in cell c
