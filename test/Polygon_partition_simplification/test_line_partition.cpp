@@ -80,13 +80,72 @@ std::vector<K::Segment_2> mixed_segments(unsigned seed)
   return s;
 }
 
-// The rules of the kinetic framework, checked on the extents by brute force (exact).
+// Segments of 2 to 30 cm in a 3 m square at projected coordinates (x about 4e6, y about 5.2e6,
+// as in UTM): the double computations must not lose the centimeters.
+std::vector<K::Segment_2> projected_segments(unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<K::Segment_2> s;
+  while(s.size() < 150) {
+    const double x = 4e6 + 3 * u(rng), y = 5.2e6 + 3 * u(rng), a = 6.283185307179586 * u(rng), l = 0.02 + 0.28 * u(rng);
+    const K::Point_2 p(x, y), q(x + l * std::cos(a), y + l * std::sin(a));
+    if(p != q) s.emplace_back(p, q);
+  }
+  return s;
+}
+
+// crossing_distance: a growing end reaches the point I where the segment j that stops it and the
+// line of a segment k far from I meet exactly. Its next intersection (the line of k, at I) is at
+// distance 0, so it crosses j, however the double parameters of j and k at I round (found by
+// search among configurations where they round in the order that once made it stop).
+void test_crossing_distance_at_concurrent_lines()
+{
+  using KP = PPS::internal::Kinetic_propagation_2;
+  auto parameter = [](double px, double py, double qx, double qy, double ox, double oy, double vx, double vy) {
+    const double a = py - qy, b = qx - px, c = px * qy - py * qx;
+    return -(a * ox + b * oy + c) / (a * vx + b * vy);
+  };
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t found = 0;
+  for(int attempt = 0; attempt < 100000 && found < 3; ++attempt) {
+    const double ix = 0.3 + 0.4 * u(rng), iy = 0.3 + 0.4 * u(rng);
+    const double ux = 0.125, uy = 0.03125 * (1 + int(u(rng) * 3));
+    const double ax = ix - 2 * ux, ay = iy - 2 * uy, bx = ix - ux, by = iy - uy; // grows from b to I
+    if(bx + (bx - ax) != ix || by + (by - ay) != iy) continue;
+    const double jx = ix - 0.0625, jy = iy + 0.25;
+    const double kdx = 0.03125 * (1 + int(u(rng) * 4)), kdy = 0.0625;
+    const std::vector<EK::Segment_2> segments{
+      EK::Segment_2(EK::Point_2(ax, ay), EK::Point_2(bx, by)), EK::Segment_2(EK::Point_2(ix, iy), EK::Point_2(jx, jy)),
+      EK::Segment_2(EK::Point_2(ix + 3 * kdx, iy + 3 * kdy), EK::Point_2(ix + 4 * kdx, iy + 4 * kdy))};
+    if(!EK::Line_2(segments[2].source(), segments[2].target()).has_on(EK::Point_2(ix, iy))) continue;
+    const double tj = parameter(ix, iy, jx, jy, bx, by, bx - ax, by - ay);
+    const double tk = parameter(ix + 3 * kdx, iy + 3 * kdy, ix + 4 * kdx, iy + 4 * kdy, bx, by, bx - ax, by - ay);
+    if(!(tk < tj)) continue;
+    ++found;
+    const std::array<EK::Point_2, 4> box{EK::Point_2(-10, -10), EK::Point_2(10, -10), EK::Point_2(10, 10), EK::Point_2(-10, 10)};
+    KP crossing(segments, box, 0, 0.5);
+    crossing.run();
+    CHECK(crossing.extent(0).target() != EK::Point_2(ix, iy)); // went on
+    KP stopping(segments, box, 0, 0); // without the option it stops at I
+    stopping.run();
+    CHECK(stopping.extent(0).target() == EK::Point_2(ix, iy));
+  }
+  CHECK(found == 3);
+}
+
+// The rules of the kinetic framework, checked on the extents by brute force (exact), in a box
+// around the segments.
 void test_kinetic_rules(const std::vector<K::Segment_2>& input)
 {
   std::vector<EK::Segment_2> segments;
   for(const auto& s : input)
     segments.emplace_back(EK::Point_2(s.source().x(), s.source().y()), EK::Point_2(s.target().x(), s.target().y()));
-  const std::array<EK::Point_2, 4> box{EK::Point_2(-20, -20), EK::Point_2(120, -20), EK::Point_2(120, 120), EK::Point_2(-20, 120)};
+  const CGAL::Bbox_2 bbox = CGAL::bbox_2(input.begin(), input.end());
+  const double margin = 0.2 * std::max(bbox.xmax() - bbox.xmin(), bbox.ymax() - bbox.ymin());
+  const double x0 = bbox.xmin() - margin, x1 = bbox.xmax() + margin, y0 = bbox.ymin() - margin, y1 = bbox.ymax() + margin;
+  const std::array<EK::Point_2, 4> box{EK::Point_2(x0, y0), EK::Point_2(x1, y0), EK::Point_2(x1, y1), EK::Point_2(x0, y1)};
   PPS::internal::Kinetic_propagation_2 propagation(segments, box, 0, 0);
   propagation.run();
   std::vector<EK::Segment_2> extents;
@@ -459,7 +518,8 @@ void test_faces_against_arrangement()
 
 // The grid used by the kinetic propagation and the validity check lists every segment in the
 // cell of each of its points (checked on points sampled along random segments, short and long,
-// axis-parallel and not, in a grid whose cells are much smaller than the long ones).
+// axis-parallel and not, nearly horizontal across row boundaries, in a grid whose cells are
+// much smaller than the long ones).
 void test_segment_grid()
 {
   std::mt19937 rng(3);
@@ -473,6 +533,18 @@ void test_segment_grid()
     if(i % 11 == 0) s[2] = s[0]; // vertical
     for(double& c : s) c = std::clamp(c, -100., 100.);
     segments.push_back(s);
+  }
+  // and segments rising by a few units in the last place across row boundaries (with the same
+  // number of segments, the grid has the same rows)
+  const std::size_t first_flat = segments.size();
+  segments.resize(first_flat + 20, {{0, 0, 1, 0}});
+  {
+    const PPS::internal::Segment_grid_2 rows(segments, {{-100, -100}}, {{100, 100}});
+    for(std::size_t k = 0; k < 20; ++k) {
+      const double boundary = -100 + double(1 + k % 15) * rows.cell_size(); // inside the rectangle
+      const double ulp = boundary - std::nextafter(boundary, -1000.);
+      segments[first_flat + k] = {{-90. + k, boundary - 2 * ulp, 90. - k, boundary + 6 * ulp}};
+    }
   }
   const PPS::internal::Segment_grid_2 grid(segments, {{-100, -100}}, {{100, 100}});
   CHECK(grid.cell_size() < 20);
@@ -497,6 +569,8 @@ int main()
   test_segment_grid();
   for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(random_segments(40, seed));
   for(unsigned seed = 1; seed <= 2; ++seed) test_kinetic_rules(mixed_segments(seed));
+  for(unsigned seed = 1; seed <= 3; ++seed) test_kinetic_rules(projected_segments(seed));
+  test_crossing_distance_at_concurrent_lines();
   test_against_line_arrangement();
   test_cells_and_invariance();
   test_builders();

@@ -65,14 +65,11 @@ public:
   {
     const std::size_t n = segments.size();
     lines_.reserve(n);
-    double_lines_.reserve(n);
+    double_segments_.reserve(n);
     for(const auto& s : segments) {
       lines_.emplace_back(s.source(), s.target());
-      const double px = CGAL::to_double(s.source().x()), py = CGAL::to_double(s.source().y());
-      const double qx = CGAL::to_double(s.target().x()), qy = CGAL::to_double(s.target().y());
-      double_lines_.push_back({py - qy, qx - px, px * qy - py * qx});
-      double_segments_.push_back({px, py, qx, qy});
-      magnitude_ = std::max({magnitude_, std::abs(px), std::abs(py), std::abs(qx), std::abs(qy)});
+      double_segments_.push_back({CGAL::to_double(s.source().x()), CGAL::to_double(s.source().y()),
+                                  CGAL::to_double(s.target().x()), CGAL::to_double(s.target().y())});
     }
     {
       std::array<double, 2> low{{CGAL::to_double(box[0].x()), CGAL::to_double(box[0].y())}}, high = low;
@@ -225,11 +222,9 @@ private:
       if(visited_[j] == stamp_) return;
       visited_[j] = stamp_;
       if(j == own) return;
-      const auto& l = double_lines_[j];
-      const double den = l[0] * vx + l[1] * vy;
-      if(den == 0) return;
-      const double t = -(l[0] * ox + l[1] * oy + l[2]) / den;
-      if(!(t > -1e-9) || t > limit) return;
+      double den;
+      const double t = parameter_on(j, ox, oy, vx, vy, den);
+      if(den == 0 || !(t > -1e-9) || t > limit) return;
       const Candidate c{t, j};
       if(!(ray.last < c) || cannot_cover(j, ox, oy, vx, vy, ray.direction_length, t, den)) return;
       found.push_back(c);
@@ -256,12 +251,24 @@ private:
     ray.cursor = 0;
   }
 
+  // The parameter t of the point O + t V where the ray (origin O, direction V) meets the line
+  // of segment j, and den = (a_j, b_j) . V (0 when they are parallel in double precision).
+  // Computed from O - A, A the source of S_j, so that the rounding errors are relative to the
+  // distances involved, not to the coordinates (projected coordinates are millions of meters
+  // for segments of centimeters).
+  double parameter_on(std::size_t j, double ox, double oy, double vx, double vy, double& den) const
+  {
+    const auto& s = double_segments_[j];
+    const double a = s[1] - s[3], b = s[2] - s[0];
+    den = a * vx + b * vy;
+    return -(a * (ox - s[0]) + b * (oy - s[1])) / den;
+  }
+
   // Certainly (in spite of rounding) true when segment j does not reach the point I = O + t V
-  // of the ray (origin O, direction V of length |V|) before the ray: d(I, S_j) > t |V|, with
-  // t and den = (a_j, b_j) . V computed in double. Error bound: the coordinates are at most
-  // M in absolute value, so the line of S_j evaluated at O is off by a few units in the last
-  // place of M |S_j|, and t |V| and I are off by about 1e-15 M / sin(theta), theta the angle
-  // between the ray and S_j (so are both distances compared); the margin is 1e-9 M / sin(theta),
+  // of the ray (direction V of length |V|) before the ray: d(I, S_j) > t |V|, with t and den
+  // from parameter_on(). Error bound: with D = |O - A| + |S_j| + t |V| (A the source of S_j),
+  // t |V| and the position of I relative to A are off by a few units in the last place of
+  // D / sin(theta), theta the angle between the ray and S_j; the margin is 1e-9 D / sin(theta),
   // a million times more. Nearly parallel lines (sin(theta) < 1e-6) are always kept.
   bool cannot_cover(std::size_t j, double ox, double oy, double vx, double vy, double v_length,
                     double t, double den) const
@@ -271,11 +278,13 @@ private:
     const double w_length = std::sqrt(wx * wx + wy * wy);
     const double sin_theta = std::abs(den) / (v_length * w_length);
     if(!(sin_theta > 1e-6)) return false;
-    const double ix = ox + t * vx, iy = oy + t * vy;
-    const double along = ((ix - s[0]) * wx + (iy - s[1]) * wy) / w_length; // from the source
-    const double beyond = std::max(-along, along - w_length);            // d(I, S_j)
-    const double margin = 1e-9 * std::max(magnitude_, std::abs(t) * v_length) / sin_theta;
-    return beyond > std::abs(t) * v_length + margin;
+    const double dx = ox - s[0], dy = oy - s[1];                    // O - A
+    const double ix = dx + t * vx, iy = dy + t * vy;                // I - A
+    const double along = (ix * wx + iy * wy) / w_length;            // from A, along S_j
+    const double beyond = std::max(-along, along - w_length);      // d(I, S_j)
+    const double reach = std::abs(t) * v_length;                    // T_ray(I)
+    const double margin = 1e-9 * (std::abs(dx) + std::abs(dy) + w_length + reach) / sin_theta;
+    return beyond > reach + margin;
   }
 
   // Puts the exact minimum of the current cluster at the cursor and queues the ray.
@@ -361,7 +370,7 @@ private:
       if(covers(head.segment, I, t2, r)) {
         stop = true;
         if(ray.crossings < maximum_crossings_) { stop = false; ++ray.crossings; }
-        else if(crossing_distance_ > 0 && next_is_close(ray, head.parameter)) stop = false;
+        else if(crossing_distance_ > 0 && next_is_close(ray, head)) stop = false;
         if(!stop) ++statistics_.crossings;
       }
     }
@@ -376,34 +385,32 @@ private:
     push_next(r);
   }
 
-  // Is the next intersection along the ray (with a supporting line, wherever its segment is,
-  // or with the box) closer than the crossing distance? The candidates of the ray are only
-  // those that may stop it, so the supporting lines are scanned again.
-  bool next_is_close(const Ray& ray, double parameter) const
+  // Is the next intersection along the ray after its head (with a supporting line, wherever
+  // its segment is, or with the box) closer than the crossing distance? The candidates of the
+  // ray are only those that may stop it, so the supporting lines are scanned again. Another
+  // line through the head's point (its double parameter within the tolerance of push_next()
+  // of the head's, on either side) is at distance 0.
+  bool next_is_close(const Ray& ray, const Candidate& head) const
   {
     const std::size_t own = std::size_t(&ray - rays_.data()) / 2;
     const double ox = CGAL::to_double(ray.origin.x()), oy = CGAL::to_double(ray.origin.y());
     const double vx = CGAL::to_double(ray.direction.x()), vy = CGAL::to_double(ray.direction.y());
     const double limit = ray.box_parameter_double * (1 + 1e-9) + 1e-12;
-    Candidate next{ray.box_parameter_double, box_candidate};
-    for(std::size_t j = 0; j < double_lines_.size(); ++j) {
-      if(j == own) continue;
-      const auto& l = double_lines_[j];
-      const double den = l[0] * vx + l[1] * vy;
-      if(den == 0) continue;
-      const double t = -(l[0] * ox + l[1] * oy + l[2]) / den;
-      if(!(t > -1e-9) || t > limit) continue;
-      const Candidate c{t, std::uint32_t(j)};
-      if(ray.last < c && c < next) next = c;
+    const double from = head.parameter - 1e-9 * std::max(1., std::abs(head.parameter));
+    double next = ray.box_parameter_double;
+    for(std::size_t j = 0; j < double_segments_.size(); ++j) {
+      if(j == own || j == head.segment) continue;
+      double den;
+      const double t = parameter_on(j, ox, oy, vx, vy, den);
+      if(den == 0 || !(t > -1e-9) || t > limit || t < from) continue;
+      next = std::min(next, t);
     }
-    return (next.parameter - parameter) * ray.direction_length < crossing_distance_;
+    return (std::max(next, head.parameter) - head.parameter) * ray.direction_length < crossing_distance_;
   }
 
   const std::vector<EK::Segment_2>& segments_;
   std::vector<EK::Line_2> lines_;
-  std::vector<std::array<double, 3>> double_lines_;
   std::vector<std::array<double, 4>> double_segments_; // endpoints, rounded to double
-  double magnitude_ = 0;                               // largest absolute coordinate
   Segment_grid_2 grid_{{}, {{0, 0}}, {{1, 1}}};        // the segments, by position
   std::vector<std::uint32_t> visited_;                 // stamp of the last refill that saw a segment
   std::uint32_t stamp_ = 0;

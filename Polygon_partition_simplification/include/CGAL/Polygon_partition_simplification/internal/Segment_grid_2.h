@@ -29,7 +29,8 @@ public:
                  std::array<double, 2> high)
     : low_(low)
   {
-    const double width = std::max(high[0] - low[0], 0.), height = std::max(high[1] - low[1], 0.);
+    double width = std::max(high[0] - low[0], 0.), height = std::max(high[1] - low[1], 0.);
+    if(!std::isfinite(width) || !std::isfinite(height)) width = height = 0; // one cell
     const double n = double(std::max<std::size_t>(segments.size(), 1));
     cell_ = std::sqrt(width * height / n);
     // at most 4096 cells along a side (a very elongated rectangle gets larger cells)
@@ -49,7 +50,7 @@ public:
   double cell_size() const { return cell_; }
 
   // Calls f(cell) for the cells that segment s may meet (all those it meets): row by row, the
-  // columns where the segment is within the row's band, one more on each side for rounding,
+  // columns where the segment is within the rows around it, one more on each side for rounding,
   // and among them the cells whose center is closer to the segment's line than a cell's side
   // (more than the half-diagonal). About 3 cells per row and one per column it crosses.
   template <class F>
@@ -66,7 +67,9 @@ public:
           const double t = std::clamp((band_y - s[1]) / dy, 0., 1.);
           return s[0] + t * dx;
         };
-        const double xa = x_at(low_[1] + y * cell_), xb = x_at(low_[1] + (y + 1) * cell_);
+        // the band of rows y - 1 to y + 1: a point that row() puts in row y lies in it whatever
+        // the rounding of the band's limits and of the point's row
+        const double xa = x_at(low_[1] + (y - 1) * cell_), xb = x_at(low_[1] + (y + 2) * cell_);
         from = std::max(x0, column(std::min(xa, xb)) - 1);
         to = std::min(x1, column(std::max(xa, xb)) + 1);
       }
@@ -84,8 +87,8 @@ public:
   {
     for(std::uint32_t e = first_[c]; e < first_[c + 1]; ++e) f(entries_[e]);
   }
-  int column(double x) const { return std::clamp(int(std::floor((x - low_[0]) / cell_)), 0, columns_ - 1); }
-  int row(double y) const { return std::clamp(int(std::floor((y - low_[1]) / cell_)), 0, rows_ - 1); }
+  int column(double x) const { return index((x - low_[0]) / cell_, columns_); }
+  int row(double y) const { return index((y - low_[1]) / cell_, rows_); }
 
   // do the rings 0 to k around cell (x, y) cover the whole grid?
   bool covers_all(int x, int y, int k) const
@@ -108,7 +111,13 @@ public:
   }
 
 private:
-  static int count_of(double cells) { return int(std::clamp(std::ceil(cells), 1., 4096.)); }
+  static int count_of(double cells) { return cells > 1 ? int(std::min(std::ceil(cells), 4096.)) : 1; }
+  // floor(position), clamped to [0, count - 1] before the conversion (NaN gives 0)
+  static int index(double position, int count)
+  {
+    const double c = std::floor(position);
+    return c >= 0 ? int(std::min(c, double(count - 1))) : 0;
+  }
 
   std::array<double, 2> low_;
   double cell_ = 1;
