@@ -217,7 +217,7 @@ public:
   {
     const auto segments = drawable_segments<CGAL::Exact_predicates_exact_constructions_kernel>();
     Exact_arrangement_2 arrangement;
-    CGAL::insert(arrangement, segments.first.begin(), segments.first.end());
+    CGAL::insert(arrangement, segments.begin(), segments.end());
     return arrangement;
   }
 
@@ -293,23 +293,33 @@ private:
   using Fast_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Planar_arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<Fast_kernel>>;
 
-  // The edges as segments in kernel K (normalized frame), with their indices. An edge of an
-  // invalid partition may have an end at infinity or two coinciding ends: it bounds nothing,
-  // and is left out (of the arrangements and of the crossing test).
-  template <class K>
-  std::pair<std::vector<typename K::Segment_2>, std::vector<std::size_t>> drawable_segments() const
+  // The points (normalized frame) and the edges that can be drawn, as pairs of points. An edge
+  // of an invalid partition may have an end at infinity or two coinciding ends: it bounds
+  // nothing, and is left out (of the arrangements and of the crossing test).
+  std::pair<std::vector<std::array<double, 2>>, std::vector<std::array<std::size_t, 2>>> drawable_edges() const
   {
-    std::vector<std::array<double, 2>> p(vertices_.size());
-    for(std::size_t v = 0; v < vertices_.size(); ++v) p[v] = normalized_point(v);
+    std::pair<std::vector<std::array<double, 2>>, std::vector<std::array<std::size_t, 2>>> result;
+    auto& [points, edges] = result;
+    points.resize(vertices_.size());
+    for(std::size_t v = 0; v < vertices_.size(); ++v) points[v] = normalized_point(v);
     auto finite = [](const std::array<double, 2>& x) { return std::isfinite(x[0]) && std::isfinite(x[1]); };
-    std::pair<std::vector<typename K::Segment_2>, std::vector<std::size_t>> result;
-    for(std::size_t e = 0; e < edges_.size(); ++e) {
-      const std::array<double, 2>& a = p[edges_[e].source];
-      const std::array<double, 2>& b = p[edges_[e].target];
-      if(!finite(a) || !finite(b) || a == b) continue;
-      result.first.emplace_back(typename K::Point_2(a[0], a[1]), typename K::Point_2(b[0], b[1]));
-      result.second.push_back(e);
+    for(const Edge& e : edges_) {
+      const auto& a = points[e.source];
+      const auto& b = points[e.target];
+      if(finite(a) && finite(b) && a != b) edges.push_back({{e.source, e.target}});
     }
+    return result;
+  }
+
+  // the drawable edges as segments in kernel K (normalized frame)
+  template <class K>
+  std::vector<typename K::Segment_2> drawable_segments() const
+  {
+    const auto [points, edges] = drawable_edges();
+    std::vector<typename K::Segment_2> result;
+    for(const auto& e : edges)
+      result.emplace_back(typename K::Point_2(points[e[0]][0], points[e[0]][1]),
+                          typename K::Point_2(points[e[1]][0], points[e[1]][1]));
     return result;
   }
 
@@ -318,7 +328,7 @@ private:
   {
     const auto segments = drawable_segments<Fast_kernel>();
     Planar_arrangement arrangement;
-    CGAL::insert_non_intersecting_curves(arrangement, segments.first.begin(), segments.first.end());
+    CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
     return arrangement;
   }
 
@@ -346,16 +356,8 @@ private:
   // do two drawable edges meet elsewhere than at a common end?
   bool has_crossings() const
   {
-    std::vector<std::array<double, 2>> points(vertices_.size());
-    for(std::size_t v = 0; v < vertices_.size(); ++v) points[v] = normalized_point(v);
-    auto finite = [](const std::array<double, 2>& x) { return std::isfinite(x[0]) && std::isfinite(x[1]); };
-    std::vector<std::array<std::size_t, 2>> drawable;
-    for(const Edge& e : edges_) {
-      const auto& a = points[e.source];
-      const auto& b = points[e.target];
-      if(finite(a) && finite(b) && a != b) drawable.push_back({e.source, e.target});
-    }
-    return !internal::crossing_edge_pairs(points, drawable, false, [](const auto&, const auto&) { return true; }).empty();
+    const auto [points, edges] = drawable_edges();
+    return !internal::crossing_edge_pairs(points, edges, false, [](const auto&, const auto&) { return true; }).empty();
   }
 
   Frame frame_;

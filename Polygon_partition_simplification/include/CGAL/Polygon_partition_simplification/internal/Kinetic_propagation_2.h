@@ -212,9 +212,7 @@ private:
     ++statistics_.refills;
     Ray& ray = rays_[r];
     const std::size_t own = r / 2;
-    const double ox = CGAL::to_double(ray.origin.x()), oy = CGAL::to_double(ray.origin.y());
-    const double vx = CGAL::to_double(ray.direction.x()), vy = CGAL::to_double(ray.direction.y());
-    const double limit = ray.box_parameter_double * (1 + 1e-9) + 1e-12;
+    const Ray_in_double d = in_double(ray);
     if(++stamp_ == 0) { std::fill(visited_.begin(), visited_.end(), 0); stamp_ = 1; }
     std::vector<Candidate> found;
     double smallest = std::numeric_limits<double>::infinity();
@@ -222,22 +220,21 @@ private:
       if(visited_[j] == stamp_) return;
       visited_[j] = stamp_;
       if(j == own) return;
-      double den;
-      const double t = parameter_on(j, ox, oy, vx, vy, den);
-      if(den == 0 || !(t > -1e-9) || t > limit) return;
+      double t, den;
+      if(!line_candidate(d, j, t, den)) return;
       const Candidate c{t, j};
-      if(!(ray.last < c) || cannot_cover(j, ox, oy, vx, vy, ray.direction_length, t, den)) return;
+      if(!(ray.last < c) || cannot_cover(d, j, t, den)) return;
       found.push_back(c);
       smallest = std::min(smallest, t);
     };
     if(!ray.box_listed) smallest = ray.box_parameter_double;
-    const int x = grid_.column(ox), y = grid_.row(oy);
+    const int x = grid_.column(d.ox), y = grid_.row(d.oy);
     double cut = std::numeric_limits<double>::infinity();
     for(int k = 0;; ++k) {
       grid_.for_each_in_ring(x, y, k, visit);
       if(grid_.covers_all(x, y, k)) { cut = std::numeric_limits<double>::infinity(); break; }
       const double known = std::max(0., (k - 1) * grid_.cell_size() / (2 * ray.direction_length));
-      cut = known * (1 - 1e-6) - 1e-8 * std::max(1., known);
+      cut = known * (1 - 1e-6) - 10 * cluster_tolerance(known);
       if(smallest <= cut) break;
     }
     found.erase(std::remove_if(found.begin(), found.end(), [&](const Candidate& c) { return c.parameter > cut; }),
@@ -251,38 +248,55 @@ private:
     ray.cursor = 0;
   }
 
-  // The parameter t of the point O + t V where the ray (origin O, direction V) meets the line
-  // of segment j, and den = (a_j, b_j) . V (0 when they are parallel in double precision).
-  // Computed from O - A, A the source of S_j, so that the rounding errors are relative to the
-  // distances involved, not to the coordinates (projected coordinates are millions of meters
-  // for segments of centimeters).
-  double parameter_on(std::size_t j, double ox, double oy, double vx, double vy, double& den) const
+  // A ray in double precision: origin O, direction V (of length |V|), and the largest parameter
+  // of a candidate (the box's, with slack).
+  struct Ray_in_double
+  {
+    double ox, oy, vx, vy, length, limit;
+  };
+  static Ray_in_double in_double(const Ray& ray)
+  {
+    return {CGAL::to_double(ray.origin.x()), CGAL::to_double(ray.origin.y()),
+            CGAL::to_double(ray.direction.x()), CGAL::to_double(ray.direction.y()), ray.direction_length,
+            ray.box_parameter_double * (1 + 1e-9) + 1e-12};
+  }
+
+  // Double parameters closer than this to p are ordered exactly (push_next() groups them).
+  static double cluster_tolerance(double p) { return 1e-9 * std::max(1., std::abs(p)); }
+
+  // Does the ray meet the line of segment j ahead of its origin and before the box? Then t is
+  // the parameter of the point O + t V and den = (a_j, b_j) . V (0 when they are parallel in
+  // double precision, and then it does not). Computed from O - A, A the source of S_j, so
+  // that the rounding errors are relative to the distances involved, not to the coordinates
+  // (projected coordinates are millions of meters for segments of centimeters).
+  bool line_candidate(const Ray_in_double& d, std::size_t j, double& t, double& den) const
   {
     const auto& s = double_segments_[j];
     const double a = s[1] - s[3], b = s[2] - s[0];
-    den = a * vx + b * vy;
-    return -(a * (ox - s[0]) + b * (oy - s[1])) / den;
+    den = a * d.vx + b * d.vy;
+    if(den == 0) return false;
+    t = -(a * (d.ox - s[0]) + b * (d.oy - s[1])) / den;
+    return t > -1e-9 && t <= d.limit;
   }
 
   // Certainly (in spite of rounding) true when segment j does not reach the point I = O + t V
-  // of the ray (direction V of length |V|) before the ray: d(I, S_j) > t |V|, with t and den
-  // from parameter_on(). Error bound: with D = |O - A| + |S_j| + t |V| (A the source of S_j),
-  // t |V| and the position of I relative to A are off by a few units in the last place of
-  // D / sin(theta), theta the angle between the ray and S_j; the margin is 1e-9 D / sin(theta),
-  // a million times more. Nearly parallel lines (sin(theta) < 1e-6) are always kept.
-  bool cannot_cover(std::size_t j, double ox, double oy, double vx, double vy, double v_length,
-                    double t, double den) const
+  // of the ray before the ray: d(I, S_j) > t |V|, with t and den from line_candidate(). Error
+  // bound: with D = |O - A| + |S_j| + t |V| (A the source of S_j), t |V| and the position of I
+  // relative to A are off by a few units in the last place of D / sin(theta), theta the angle
+  // between the ray and S_j; the margin is 1e-9 D / sin(theta), a million times more. Nearly
+  // parallel lines (sin(theta) < 1e-6) are always kept.
+  bool cannot_cover(const Ray_in_double& d, std::size_t j, double t, double den) const
   {
     const auto& s = double_segments_[j];
     const double wx = s[2] - s[0], wy = s[3] - s[1];
     const double w_length = std::sqrt(wx * wx + wy * wy);
-    const double sin_theta = std::abs(den) / (v_length * w_length);
+    const double sin_theta = std::abs(den) / (d.length * w_length);
     if(!(sin_theta > 1e-6)) return false;
-    const double dx = ox - s[0], dy = oy - s[1];                    // O - A
-    const double ix = dx + t * vx, iy = dy + t * vy;                // I - A
+    const double dx = d.ox - s[0], dy = d.oy - s[1];                // O - A
+    const double ix = dx + t * d.vx, iy = dy + t * d.vy;            // I - A
     const double along = (ix * wx + iy * wy) / w_length;            // from A, along S_j
     const double beyond = std::max(-along, along - w_length);      // d(I, S_j)
-    const double reach = std::abs(t) * v_length;                    // T_ray(I)
+    const double reach = std::abs(t) * d.length;                    // T_ray(I)
     const double margin = 1e-9 * (std::abs(dx) + std::abs(dy) + w_length + reach) / sin_theta;
     return beyond > reach + margin;
   }
@@ -299,7 +313,7 @@ private:
         if(ray.candidates.empty()) return;
       }
       auto& c = ray.candidates;
-      const double tolerance = 1e-9 * std::max(1., std::abs(c[ray.cursor].parameter));
+      const double tolerance = cluster_tolerance(c[ray.cursor].parameter);
       std::size_t end = ray.cursor + 1;
       while(end < c.size() && c[end].parameter <= c[ray.cursor].parameter + tolerance) ++end;
       // exact selection of the smallest parameter in [cursor, end)
@@ -393,17 +407,12 @@ private:
   bool next_is_close(const Ray& ray, const Candidate& head) const
   {
     const std::size_t own = std::size_t(&ray - rays_.data()) / 2;
-    const double ox = CGAL::to_double(ray.origin.x()), oy = CGAL::to_double(ray.origin.y());
-    const double vx = CGAL::to_double(ray.direction.x()), vy = CGAL::to_double(ray.direction.y());
-    const double limit = ray.box_parameter_double * (1 + 1e-9) + 1e-12;
-    const double from = head.parameter - 1e-9 * std::max(1., std::abs(head.parameter));
+    const Ray_in_double d = in_double(ray);
+    const double from = head.parameter - cluster_tolerance(head.parameter);
     double next = ray.box_parameter_double;
     for(std::size_t j = 0; j < double_segments_.size(); ++j) {
-      if(j == own || j == head.segment) continue;
-      double den;
-      const double t = parameter_on(j, ox, oy, vx, vy, den);
-      if(den == 0 || !(t > -1e-9) || t > limit || t < from) continue;
-      next = std::min(next, t);
+      double t, den;
+      if(j != own && j != head.segment && line_candidate(d, j, t, den) && t >= from) next = std::min(next, t);
     }
     return (std::max(next, head.parameter) - head.parameter) * ray.direction_length < crossing_distance_;
   }

@@ -28,6 +28,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -56,15 +57,14 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
   if(edges.empty()) return result;
   auto point = [&](std::size_t v) { return K::Point_2(points[v][0], points[v][1]); };
   std::vector<std::array<double, 4>> segments(edges.size());
-  std::array<double, 2> low = points[edges[0][0]], high = low;
+  std::vector<CGAL::Bbox_2> boxes(edges.size());
+  CGAL::Bbox_2 extent;
   for(std::size_t e = 0; e < edges.size(); ++e) {
     const auto& a = points[edges[e][0]];
     const auto& b = points[edges[e][1]];
     segments[e] = {{a[0], a[1], b[0], b[1]}};
-    for(int c = 0; c < 2; ++c) {
-      low[c] = std::min({low[c], a[c], b[c]});
-      high[c] = std::max({high[c], a[c], b[c]});
-    }
+    boxes[e] = point(edges[e][0]).bbox() + point(edges[e][1]).bbox();
+    extent += boxes[e];
   }
   // the suspects; an edge joining the same two points as another is one
   std::vector<bool> suspect(edges.size());
@@ -95,21 +95,16 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
   };
   // Two edges that meet share a point, which lies in a cell where both are listed: each suspect
   // is tested against the edges listed in its cells whose boxes meet its box (once per pair).
-  const Segment_grid_2 grid(segments, low, high);
+  const Segment_grid_2 grid(segments, {{extent.xmin(), extent.ymin()}}, {{extent.xmax(), extent.ymax()}});
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> seen(edges.size(), none); // the last suspect that met an edge
   for(std::size_t i = 0; i < edges.size() && (all || result.empty()); ++i) {
     if(!suspect[i]) continue;
-    const auto& s = segments[i];
-    grid.for_each_cell(s, [&](std::size_t cell) {
+    grid.for_each_cell(segments[i], [&](std::size_t cell) {
       grid.for_each_in_cell(cell, [&](std::uint32_t j) {
         if(j == i || seen[j] == i || (suspect[j] && j < i)) return; // a pair of suspects once
         seen[j] = i;
-        const auto& t = segments[j];
-        if(std::max(s[0], s[2]) < std::min(t[0], t[2]) || std::max(t[0], t[2]) < std::min(s[0], s[2]) ||
-           std::max(s[1], s[3]) < std::min(t[1], t[3]) || std::max(t[1], t[3]) < std::min(s[1], s[3]))
-          return; // the boxes are disjoint
-        if((all || result.empty()) && test(i, j)) result.emplace_back(std::min<std::size_t>(i, j), std::max<std::size_t>(i, j));
+        if(CGAL::do_overlap(boxes[i], boxes[j]) && (all || result.empty()) && test(i, j)) result.emplace_back(std::min<std::size_t>(i, j), std::max<std::size_t>(i, j));
       });
     });
   }
