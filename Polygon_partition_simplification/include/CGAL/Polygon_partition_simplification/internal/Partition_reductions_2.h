@@ -37,6 +37,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <numeric>
 #include <unordered_map>
 #include <vector>
@@ -574,7 +575,8 @@ public:
 // and lines by their smallest member, in both partitions).
 inline std::vector<bool> changed_lines(const Working_partition& before, const Working_partition& after)
 {
-  std::vector<Index> name(before.lines.size(), Index(-1)); // line of `before` -> name
+  const Index removed = Index(-1), unnamed = Index(-2), long_name = Index(-3);
+  std::vector<Index> name(before.lines.size(), removed); // line of `before` -> name
   std::vector<bool> changed(after.lines.size(), false);
   for(Index r = 0; r < after.lines.size(); ++r) {
     const auto& members = after.lines[r].members;
@@ -583,38 +585,59 @@ inline std::vector<bool> changed_lines(const Working_partition& before, const Wo
     for(Index l : members) name[l] = key;
     changed[r] = members.size() > 1 || after.lines[r].coefficients != before.lines[members[0]].coefficients;
   }
-  // per name: the sorted point names and edge names around the line
-  using Point_name = std::vector<Index>;
-  auto point_name = [](const Working_partition& x, Index v, const auto& line_name) {
-    Point_name result;
-    for(Index l : x.vertex_lines[v]) result.push_back(line_name(l));
-    std::sort(result.begin(), result.end());
-    result.erase(std::unique(result.begin(), result.end()), result.end());
-    return result;
+  // A point's name, the sorted distinct names of its lines, as two numbers: {a, b} for two
+  // names a < b, {a, a} for one, {long_name, k} for the k-th other one (no line is numbered
+  // long_name). The same numbering serves both partitions.
+  using Point_name = std::array<Index, 2>;
+  std::map<std::vector<Index>, Index> long_names;
+  std::vector<Index> buffer;
+  auto point_name = [&](const Working_partition& x, Index v, const auto& line_name) -> Point_name {
+    buffer.clear();
+    for(Index l : x.vertex_lines[v]) buffer.push_back(line_name(l));
+    std::sort(buffer.begin(), buffer.end());
+    buffer.erase(std::unique(buffer.begin(), buffer.end()), buffer.end());
+    if(buffer.size() == 2) return {{buffer[0], buffer[1]}};
+    if(buffer.size() == 1) return {{buffer[0], buffer[0]}};
+    return {{long_name, long_names.emplace(buffer, Index(long_names.size())).first->second}};
   };
-  auto neighbourhoods = [&](const Working_partition& x, std::size_t n, const auto& line_name) {
-    std::vector<std::vector<Point_name>> result(n);
+  // Around each line (compressed rows): {0, point name, 0, 0} for each of its points and
+  // {1, first point name, second point name} for each of its edges, sorted.
+  using Entry = std::array<Index, 5>;
+  struct Around { std::vector<Index> first; std::vector<Entry> entries; };
+  auto neighbourhoods = [&](const Working_partition& x, const auto& line_name) {
+    Around result;
+    const std::size_t n = x.lines.size();
+    result.first.assign(n + 1, 0);
+    for(const auto& l : x.vertex_lines) for(Index line : l) ++result.first[line + 1];
+    for(const auto& e : x.edges) ++result.first[e[0] + 1];
+    for(std::size_t l = 0; l < n; ++l) result.first[l + 1] += result.first[l];
+    result.entries.resize(result.first[n]);
+    std::vector<Index> next(result.first.begin(), result.first.end() - 1);
     std::vector<Point_name> names(x.vertex_lines.size());
     for(Index v = 0; v < x.vertex_lines.size(); ++v) {
       names[v] = point_name(x, v, line_name);
-      for(Index l : x.vertex_lines[v]) result[l].push_back(names[v]);
+      for(Index l : x.vertex_lines[v]) result.entries[next[l]++] = {{0, names[v][0], names[v][1], 0, 0}};
     }
-    for(const auto& e : x.edges) { // an edge: its two point names, separated by a marker
-      const auto& [first, second] = std::minmax(names[e[1]], names[e[2]]);
-      Point_name edge = first;
-      edge.push_back(Index(-1));
-      edge.insert(edge.end(), second.begin(), second.end());
-      result[e[0]].push_back(std::move(edge));
+    for(const auto& e : x.edges) {
+      const auto& [p, q] = std::minmax(names[e[1]], names[e[2]]);
+      result.entries[next[e[0]]++] = {{1, p[0], p[1], q[0], q[1]}};
     }
-    for(auto& r : result) std::sort(r.begin(), r.end());
+    for(std::size_t l = 0; l < n; ++l)
+      std::sort(result.entries.begin() + result.first[l], result.entries.begin() + result.first[l + 1]);
     return result;
   };
-  const auto old_around = neighbourhoods(before, before.lines.size(), [&](Index l) { return name[l]; });
-  const auto new_around = neighbourhoods(after, after.lines.size(), [&](Index r) {
-    return after.lines[r].members.empty() ? Index(-2) : name[after.lines[r].members[0]];
+  const Around old_around = neighbourhoods(before, [&](Index l) { return name[l]; });
+  const Around new_around = neighbourhoods(after, [&](Index r) {
+    return after.lines[r].members.empty() ? unnamed : name[after.lines[r].members[0]];
   });
-  for(Index r = 0; r < after.lines.size(); ++r)
-    if(!changed[r] && old_around[after.lines[r].members[0]] != new_around[r]) changed[r] = true;
+  for(Index r = 0; r < after.lines.size(); ++r) {
+    if(changed[r]) continue;
+    const Index l = after.lines[r].members[0];
+    changed[r] = !std::equal(old_around.entries.begin() + old_around.first[l],
+                             old_around.entries.begin() + old_around.first[l + 1],
+                             new_around.entries.begin() + new_around.first[r],
+                             new_around.entries.begin() + new_around.first[r + 1]);
+  }
   return changed;
 }
 
