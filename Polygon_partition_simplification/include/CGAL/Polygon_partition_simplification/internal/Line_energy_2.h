@@ -242,7 +242,8 @@ public:
       const Vector_3d bc = cross(coefficients_[triplet_partners_[t][0]], coefficients_[triplet_partners_[t][1]]);
       const double det = dot(L, bc);
       if(!(std::abs(det) < w_.collapse_distance) || det == 0) continue;
-      const double s = det > 0 ? w_.concurrency_weight : -w_.concurrency_weight;
+      // no branch on the sign: it changes from step to step in the kinks of |det|
+      const double s = std::copysign(w_.concurrency_weight, det);
       d[0] += s * bc[0]; d[1] += s * bc[1]; d[2] += s * bc[2];
     }
     const std::uint32_t end_p = m + 1 < moving_.size() ? moving_[m + 1].first_pair : end_pairs_;
@@ -250,7 +251,7 @@ public:
       const Vector_3d& b = coefficients_[pair_partners_[p]];
       const double dotp = L[0] * b[0] + L[1] * b[1];
       if(!(std::abs(dotp) < w_.sin_maximum_angle) || dotp == 0) continue;
-      const double s = dotp > 0 ? w_.orthogonality_weight : -w_.orthogonality_weight;
+      const double s = std::copysign(w_.orthogonality_weight, dotp);
       d[0] += s * b[0]; d[1] += s * b[1];
     }
     return d;

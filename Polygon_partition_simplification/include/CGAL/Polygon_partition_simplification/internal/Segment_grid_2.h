@@ -58,6 +58,7 @@ public:
   {
     const int x0 = column(std::min(s[0], s[2])), x1 = column(std::max(s[0], s[2]));
     const int y0 = row(std::min(s[1], s[3])), y1 = row(std::max(s[1], s[3]));
+    if(x0 == x1 && y0 == y1) { f(std::size_t(y0) * columns_ + x0); return; } // the usual case
     const double dx = s[2] - s[0], dy = s[3] - s[1];
     const double length = std::sqrt(dx * dx + dy * dy);
     for(int y = y0; y <= y1; ++y) {
