@@ -18,7 +18,6 @@
 #include <cmath>
 #include <functional>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -265,16 +264,6 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     return Partition(partition.frame(), std::move(lines), std::move(vertices), std::move(edges));
   };
 
-  struct Coordinates_hash
-  {
-    std::size_t operator()(const std::array<double, 4>& x) const
-    {
-      std::size_t h = 0;
-      for(double c : x) h = h * 0x9E3779B97F4A7C15ull + std::hash<double>()(c);
-      return h;
-    }
-  };
-
   PPS::Simplification_statistics stats;
   stats.lines_before = partition.number_of_lines();
   stats.points_before = partition.number_of_vertices();
@@ -331,15 +320,17 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     const std::vector<signed char> orientations = PPS::internal::Partition_reducer::edge_orientations(start);
     // The edges of the partition before the round, which is valid: an edge of the reduced
     // partition with the same ends (coordinates) crosses none of them.
-    std::unordered_set<std::array<double, 4>, Coordinates_hash> start_edges;
+    std::vector<std::array<double, 4>> start_edges; // sorted (their points are finite)
+    start_edges.reserve(start.edges.size());
     for(const auto& e : start.edges) {
       const std::array<double, 2> p = start.point(e[1]), q = start.point(e[2]);
       const auto [a, b] = std::minmax(p, q);
-      start_edges.insert({{a[0], a[1], b[0], b[1]}});
+      start_edges.push_back({{a[0], a[1], b[0], b[1]}});
     }
+    std::sort(start_edges.begin(), start_edges.end());
     auto may_cross = [&](const std::array<double, 2>& p, const std::array<double, 2>& q) {
       const auto [a, b] = std::minmax(p, q);
-      return start_edges.count({{a[0], a[1], b[0], b[1]}}) == 0;
+      return !std::binary_search(start_edges.begin(), start_edges.end(), std::array<double, 4>{{a[0], a[1], b[0], b[1]}});
     };
     std::size_t ring = 0; // how far around a defect lines are frozen (grows when freezing stalls)
     std::vector<std::vector<PPS::internal::Index>> start_line_points; // built when a ring is needed

@@ -209,17 +209,21 @@ std::string partition_defect(const View& view, std::vector<std::size_t>* defecti
     }
     ends[e] = {edge[1], edge[2]};
   }
-  std::vector<std::vector<std::size_t>> incident; // built at the first defect
+  std::vector<std::size_t> first_incident, incident; // edges around each point, built at the first defect
   auto mark = [&](std::size_t v) { // the edges at point v
     if(!defective) return;
-    if(incident.empty()) {
-      incident.resize(nv);
+    if(first_incident.empty()) {
+      first_incident.assign(nv + 1, 0);
+      for(const auto& end : ends) { ++first_incident[end[0] + 1]; ++first_incident[end[1] + 1]; }
+      for(std::size_t u = 0; u < nv; ++u) first_incident[u + 1] += first_incident[u];
+      incident.resize(2 * ne);
+      std::vector<std::size_t> next(first_incident.begin(), first_incident.end() - 1);
       for(std::size_t e = 0; e < ne; ++e) {
-        incident[ends[e][0]].push_back(e);
-        incident[ends[e][1]].push_back(e);
+        incident[next[ends[e][0]]++] = e;
+        incident[next[ends[e][1]]++] = e;
       }
     }
-    defective->insert(defective->end(), incident[v].begin(), incident[v].end());
+    defective->insert(defective->end(), incident.begin() + first_incident[v], incident.begin() + first_incident[v + 1]);
   };
   std::vector<std::array<double, 2>> points(nv);
   for(std::size_t v = 0; v < nv; ++v) {
