@@ -124,12 +124,15 @@ public:
   static std::vector<signed char> edge_orientations(const Working_partition& w)
   {
     std::vector<signed char> result(w.edges.size());
-    for(std::size_t e = 0; e < w.edges.size(); ++e) {
-      const Vector_3d& L = w.lines[w.edges[e][0]].coefficients;
-      const auto p = w.point(w.edges[e][1]), q = w.point(w.edges[e][2]);
-      result[e] = (-L[1] * (q[0] - p[0]) + L[0] * (q[1] - p[1])) >= 0 ? 1 : -1;
-    }
+    for(std::size_t e = 0; e < w.edges.size(); ++e)
+      result[e] = orientation_along(w.lines[w.edges[e][0]].coefficients, w.point(w.edges[e][1]), w.point(w.edges[e][2]));
     return result;
+  }
+
+  // +1 if q follows p along the direction (-b, a) of line L, -1 otherwise
+  static signed char orientation_along(const Vector_3d& L, const std::array<double, 2>& p, const std::array<double, 2>& q)
+  {
+    return (-L[1] * (q[0] - p[0]) + L[0] * (q[1] - p[1])) >= 0 ? 1 : -1;
   }
 
   // `orientations`: those of the edges before the descent. An edge whose orientation
@@ -149,10 +152,9 @@ public:
       // A reversed edge shorter than the collapse distance went through its collapse; a longer
       // one has an end that went through infinity (its lines became parallel): that end is
       // removed, as in (b2).
-      const std::vector<signed char> now = edge_orientations(w_);
       for(std::size_t e = 0; e < w_.edges.size(); ++e) {
-        if(now[e] == orientations[e]) continue;
         const Index u = w_.edges[e][1], v = w_.edges[e][2];
+        if(orientation_along(line(w_.edges[e][0]), points[u], points[v]) == orientations[e]) continue;
         if(std::hypot(points[u][0] - points[v][0], points[u][1] - points[v][1]) < t_.collapse_length) {
           if(merge_close_points(u, v, points, t_.collapse_length)) ++counts_.point_merges;
           continue;
@@ -468,6 +470,7 @@ private:
     std::vector<std::pair<Index, Index>> through;
     std::vector<std::pair<double, Index>> sorted;
     for(Index l = 0; l < nl; ++l) {
+      const std::size_t first_of_line = edges.size();
       // intervals with real points at both ends (edges to single-line points are dropped first
       // by extending through them: a single-line point joins the intervals of its edges)
       // (a single-line point has no coordinates of its own: it is where its edges' other ends are)
@@ -509,8 +512,9 @@ private:
         }
         ++k;
       }
+      // sorted line by line: the lines come in order, so the whole array ends up sorted
+      std::sort(edges.begin() + first_of_line, edges.end());
     }
-    std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     return edges;
   }
