@@ -13,6 +13,7 @@
 #include <functional>
 #include <iostream>
 #include <random>
+#include <unordered_map>
 #include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -266,6 +267,28 @@ void test_bad_parameters()
   CHECK(s.rounds == 1 && p.is_valid());
 }
 
+// The table of the reductions that keeps the first value inserted with each key, against
+// std::unordered_map, with tables sized too small so that they grow.
+void test_first_value_map()
+{
+  std::mt19937_64 rng(5);
+  std::size_t grown = 0;
+  for(int trial = 0; trial < 300; ++trial) {
+    PPS::internal::First_value_map map;
+    std::unordered_map<std::uint64_t, std::uint32_t> reference;
+    if(trial % 3 != 0) map.clear(std::size_t(rng() % 40)); // the first third without clear()
+    const std::uint32_t range = std::uint32_t(1 + rng() % 80), n = std::uint32_t(rng() % 2000);
+    for(std::uint32_t value = 0; value < n; ++value) {
+      const std::uint64_t key = ((rng() % range) << 32) | (rng() % range);
+      const std::uint32_t expected = reference.emplace(key, value).first->second;
+      CHECK(map.insert(key, value) == expected);
+    }
+    CHECK(map.size() == reference.size());
+    if(reference.size() > 64) ++grown;
+  }
+  CHECK(grown > 100); // the trials make the tables grow
+}
+
 int main()
 {
   test_gradient();
@@ -275,6 +298,7 @@ int main()
   test_stress();
   test_360_gon();
   test_bad_parameters();
+  test_first_value_map();
   std::cout << "test_partition_simplification: all checks passed" << std::endl;
   return 0;
 }

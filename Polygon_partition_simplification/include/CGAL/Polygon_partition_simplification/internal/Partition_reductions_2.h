@@ -28,6 +28,7 @@
 // and dangling edges are removed. Merged lines get M_f = M_i + M_j and the line minimizing it.
 // Every merge removes a line or a point, so the restoration ends.
 
+#include <CGAL/Polygon_partition_simplification/internal/First_value_map.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_energy_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 
@@ -200,7 +201,7 @@ public:
         const auto& l = w_.vertex_lines[v];
         for(std::size_t a = 0; a < l.size(); ++a)
           for(std::size_t b = a + 1; b < l.size(); ++b) {
-            const std::uint64_t key = (std::uint64_t(l[a]) << 32) | l[b];
+            const std::uint64_t key = (std::uint64_t(l[a]) << 32) | l[b]; // l[a] < l[b]: not no_key
             const Index first = owner_.insert(key, v); // the first point on these two lines
             if(first == v || find_vertex(first) == find_vertex(v)) continue;
             if(!w_.lines[l[a]].is_still() && !w_.lines[l[b]].is_still() &&
@@ -559,60 +560,9 @@ private:
     for(auto& l : w_.vertex_lines) for(Index& x : l) x = used[x];
   }
 
-  // The first point met on each pair of lines: open addressing with linear probing in a table
-  // kept from pass to pass (a node per pair in std::unordered_map was the most frequent
-  // allocation of the simplification).
-  class Pair_owners
-  {
-  public:
-    void clear(std::size_t expected)
-    {
-      bits_ = 4;
-      while((std::size_t(1) << bits_) < 2 * expected) ++bits_;
-      keys_.assign(std::size_t(1) << bits_, empty);
-      owners_.resize(keys_.size());
-      count_ = 0;
-    }
-    // the point stored for `key`, after storing `v` if there was none
-    Index insert(std::uint64_t key, Index v)
-    {
-      std::size_t i = slot(key);
-      if(keys_[i] == key) return owners_[i];
-      if(2 * (count_ + 1) > keys_.size()) { // at most half full
-        std::vector<std::uint64_t> keys = std::move(keys_);
-        std::vector<Index> owners = std::move(owners_);
-        ++bits_;
-        keys_.assign(std::size_t(1) << bits_, empty);
-        owners_.resize(keys_.size());
-        for(std::size_t j = 0; j < keys.size(); ++j)
-          if(keys[j] != empty) { const std::size_t k = slot(keys[j]); keys_[k] = keys[j]; owners_[k] = owners[j]; }
-        i = slot(key);
-      }
-      keys_[i] = key;
-      owners_[i] = v;
-      ++count_;
-      return v;
-    }
-
-  private:
-    static constexpr std::uint64_t empty = std::uint64_t(-1); // no pair of line indices is this
-    // the slot of `key`, or the empty slot where it goes
-    std::size_t slot(std::uint64_t key) const
-    {
-      const std::size_t mask = keys_.size() - 1;
-      std::size_t i = std::size_t((key * 0x9E3779B97F4A7C15ull) >> (64 - bits_));
-      while(keys_[i] != key && keys_[i] != empty) i = (i + 1) & mask;
-      return i;
-    }
-    std::vector<std::uint64_t> keys_;
-    std::vector<Index> owners_;
-    std::size_t count_ = 0;
-    int bits_ = 4;
-  };
-
   Working_partition& w_;
   Reduction_thresholds t_;
-  Pair_owners owner_;
+  First_value_map owner_; // the first point met on each pair of lines (key: the two lines)
   Reduction_counts counts_;
   std::vector<Index> line_parent_, vertex_parent_;
   std::vector<Index> conflicts_;
