@@ -215,6 +215,8 @@ void test_stress()
          PPS::parameters::collapse_distance(1 + 6 * u(rng), PPS::parameters::maximum_angle(20 * u(rng))))));
     CHECK(p.is_valid());
     CHECK(st.lines_after <= st.lines_before);
+    CHECK(st.cells_after == p.number_of_cells()); // Euler's formula against CGAL's arrangement
+    CHECK(st.cells_before == CGAL::kinetic_partition_2(s).number_of_cells());
   }
 }
 

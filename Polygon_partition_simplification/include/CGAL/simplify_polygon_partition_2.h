@@ -267,7 +267,14 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   PPS::Simplification_statistics stats;
   stats.lines_before = partition.number_of_lines();
   stats.points_before = partition.number_of_vertices();
-  stats.cells_before = partition.number_of_cells();
+  // a valid partition is a plane graph: its cells follow from Euler's formula
+  auto number_of_cells = [](const PPS::internal::Working_partition& x) {
+    std::vector<std::array<PPS::internal::Index, 2>> ends;
+    ends.reserve(x.edges.size());
+    for(const auto& e : x.edges) ends.push_back({{e[1], e[2]}});
+    return PPS::internal::number_of_bounded_faces(x.vertex_lines.size(), ends);
+  };
+  stats.cells_before = number_of_cells(w);
   stats.orthogonal_pairs_before = partition.number_of_orthogonal_pairs();
   stats.energy_before = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights);
 
@@ -410,7 +417,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   stats.energy_after = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights);
   stats.lines_after = partition.number_of_lines();
   stats.points_after = partition.number_of_vertices();
-  stats.cells_after = partition.number_of_cells();
+  stats.cells_after = number_of_cells(w);
   stats.orthogonal_pairs_after = partition.number_of_orthogonal_pairs();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;

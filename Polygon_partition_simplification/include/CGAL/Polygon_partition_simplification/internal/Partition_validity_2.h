@@ -182,6 +182,26 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
     if(walk_of[2 * e] == walk_of[2 * e + 1]) bridges.push_back(e);
 }
 
+// The number of bounded faces of a plane graph (no crossing, distinct points) with
+// `number_of_points` points and the given edges ((u, v) point pairs), by Euler's formula:
+// V - E + F = 1 + C for C connected parts, so F - 1 = E - V + C.
+template <class Edges>
+std::size_t number_of_bounded_faces(std::size_t number_of_points, const Edges& edges)
+{
+  std::vector<std::size_t> parent(number_of_points);
+  for(std::size_t v = 0; v < number_of_points; ++v) parent[v] = v;
+  auto find = [&](std::size_t x) {
+    while(parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::size_t parts = number_of_points;
+  for(const auto& e : edges) {
+    const std::size_t a = find(e[0]), b = find(e[1]);
+    if(a != b) { parent[a] = b; --parts; }
+  }
+  return edges.size() + parts - number_of_points;
+}
+
 // The first defect of a partition (empty if it is valid); with `defective`, the edges of all
 // defects of the first kind found (sorted, distinct). `View` gives number_of_lines(),
 // coefficients(l), number_of_vertices(), vertex_lines(v) (sorted indices), number_of_edges()
