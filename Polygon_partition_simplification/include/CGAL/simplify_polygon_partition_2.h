@@ -324,15 +324,23 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
         if(!frozen[l]) x.lines[l].coefficients = moved[l];
       }
     };
-    const std::vector<signed char> orientations = PPS::internal::Partition_reducer::edge_orientations(start);
-    // The edges of the partition before the round, which is valid: an edge of the reduced
-    // partition with the same ends (coordinates) crosses none of them.
+    // The orientation of every edge along its line before the round (the reductions collapse
+    // the edges that reversed), and the edges before the round, which is valid: an edge of the
+    // reduced partition with the same ends (coordinates) crosses none of them.
+    std::vector<signed char> orientations(start.edges.size());
     std::vector<std::array<double, 4>> start_edges; // sorted (their points are finite)
     start_edges.reserve(start.edges.size());
-    for(const auto& e : start.edges) {
-      const std::array<double, 2> p = start.point(e[1]), q = start.point(e[2]);
-      const auto [a, b] = std::minmax(p, q);
-      start_edges.push_back({{a[0], a[1], b[0], b[1]}});
+    {
+      std::vector<std::array<double, 2>> points(start.vertex_lines.size());
+      for(PPS::internal::Index v = 0; v < points.size(); ++v) points[v] = start.point(v);
+      for(std::size_t i = 0; i < start.edges.size(); ++i) {
+        const auto& e = start.edges[i];
+        const std::array<double, 2>& p = points[e[1]];
+        const std::array<double, 2>& q = points[e[2]];
+        orientations[i] = PPS::internal::Partition_reducer::orientation_along(start.lines[e[0]].coefficients, p, q);
+        const auto [a, b] = std::minmax(p, q);
+        start_edges.push_back({{a[0], a[1], b[0], b[1]}});
+      }
     }
     std::sort(start_edges.begin(), start_edges.end());
     auto may_cross = [&](const std::array<double, 2>& p, const std::array<double, 2>& q) {

@@ -12,7 +12,6 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
-
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 
 #include <CGAL/assertions.h>

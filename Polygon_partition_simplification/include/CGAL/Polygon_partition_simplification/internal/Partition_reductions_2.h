@@ -121,15 +121,6 @@ class Partition_reducer
 public:
   Partition_reducer(Working_partition& w, const Reduction_thresholds& t) : w_(w), t_(t) {}
 
-  // Orientation of every edge along its line (+1 or -1), to find the edges that reverse.
-  static std::vector<signed char> edge_orientations(const Working_partition& w)
-  {
-    std::vector<signed char> result(w.edges.size());
-    for(std::size_t e = 0; e < w.edges.size(); ++e)
-      result[e] = orientation_along(w.lines[w.edges[e][0]].coefficients, w.point(w.edges[e][1]), w.point(w.edges[e][2]));
-    return result;
-  }
-
   // +1 if q follows p along the direction (-b, a) of line L, -1 otherwise
   static signed char orientation_along(const Vector_3d& L, const std::array<double, 2>& p, const std::array<double, 2>& q)
   {
