@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/lex_optimal_closed_surface.h>
+#include <CGAL/Lex_optimal_chains/Lexicographic_min_cut.h>
 
 #include <algorithm>
 #include <array>
@@ -110,6 +111,146 @@ void expect_error(LOC::Input_error_code code, const F& f)
     return;
   }
   assert(!"an Input_error was expected");
+}
+
+// ---- the oracle of the contracted cut: the straightforward algorithms on all the facets ----
+// All the finite facets sorted (Sorted_dual_graph_3 without filter), the persistence by a
+// plain Kruskal pass over all of them, and Algorithm 8 by the public Lexicographic_min_cut
+// over all of them; the contracted pipeline of lex_optimal_closed_surface() must give the
+// same interior cell, the same inside cells and the same cut in the same order.
+namespace LI = LOC::internal;
+using Full_graph = LI::Sorted_dual_graph_3<DT>;
+
+LI::Automatic_interior full_most_persistent_void(const Full_graph& graph, const std::vector<std::uint32_t>& sinks)
+{
+  const auto& records = graph.records();
+  const std::size_t n = graph.number_of_cells(), m = records.size();
+  constexpr std::uint32_t unborn = std::numeric_limits<std::uint32_t>::max();
+  LI::Union_find sets(n);
+  std::vector<std::uint32_t> birth(n, unborn);
+  std::uint32_t sink_root = sinks.front();
+  for(std::uint32_t c : sinks) sink_root = sets.unite(sink_root, c);
+  birth[sink_root] = 0;
+  LI::Automatic_interior best;
+  bool found = false;
+  for(std::size_t t = 0; t < m; ++t) {
+    const auto& r = records[m - 1 - t];
+    const std::uint32_t scan = std::uint32_t(t + 1);
+    const std::uint32_t a = sets.find(Full_graph::owner_position(r)), b = sets.find(Full_graph::other_position(r));
+    if(birth[a] == unborn) birth[a] = scan;
+    if(birth[b] == unborn) birth[b] = scan;
+    if(a == b) continue;
+    const bool a_younger = birth[a] > birth[b] || (birth[a] == birth[b] && a > b);
+    const std::uint32_t young = a_younger ? a : b, old = a_younger ? b : a;
+    const auto& born_with = records[m - birth[young]];
+    const double born = LI::key_value(born_with.key), dies = LI::key_value(r.key);
+    const double persistence = dies > 0 ? born / dies : std::numeric_limits<double>::infinity();
+    if(!found || persistence > best.persistence) {
+      best.cell = sets.find(Full_graph::owner_position(born_with)) == young ? Full_graph::owner_position(born_with)
+                                                                           : Full_graph::other_position(born_with);
+      best.persistence = persistence;
+      found = true;
+    }
+    const std::uint32_t old_birth = birth[old];
+    birth[sets.link_roots(a, b)] = old_birth;
+  }
+  assert(found);
+  return best;
+}
+
+// The cells of `dt` holding `points`, by position (the cells of a point on a facet, edge or vertex: all of them)
+std::vector<std::uint32_t> cells_of(const DT& dt, const Full_graph& graph, const std::vector<Point>& points)
+{
+  std::vector<std::uint32_t> cells;
+  for(const Point& p : points) cells.push_back(graph.position(dt.locate(p)));
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  return cells;
+}
+
+// Compares the facets and the inside of the contracted pipeline with the oracle, for the
+// automatic interior when `interior` is empty and otherwise for the cells holding `interior`
+// (whose points must lie inside cells), plus, for the automatic case, Algorithm 8 from
+// `extra_sources` other single cells through the spanning tree.
+void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::vector<Point>& interior,
+                                    const std::vector<Point>& exterior, const char* what, int extra_sources = 0)
+{
+  const DT dt(pts.begin(), pts.end());
+  const Full_graph graph(dt, [](double) { return true; });
+  std::vector<std::uint32_t> sinks = cells_of(dt, graph, exterior);
+  {
+    std::vector<DT::Cell_handle> hull;
+    dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
+    for(const auto& c : hull) sinks.push_back(graph.position(c));
+    std::sort(sinks.begin(), sinks.end());
+    sinks.erase(std::unique(sinks.begin(), sinks.end()), sinks.end());
+  }
+  auto always = [](double) { return true; };
+  // the oracle's cut from the given sources, as (inside cell, facet) in decreasing order
+  auto full_cut = [&](const std::vector<std::uint32_t>& sources) {
+    LOC::Lexicographic_min_cut cut(graph.number_of_cells(), sources, sinks);
+    std::vector<DT::Facet> facets;
+    const auto& records = graph.records();
+    for(std::size_t t = records.size(); t-- > 0;) {
+      const auto& r = records[t];
+      if(!cut.process(Full_graph::owner_position(r), Full_graph::other_position(r))) continue;
+      const auto owner = graph.cell(Full_graph::owner_position(r));
+      const int j = Full_graph::facet_index(r);
+      if(cut.is_on_source_side(Full_graph::owner_position(r))) facets.emplace_back(owner, j);
+      else facets.emplace_back(owner->neighbor(j), owner->neighbor(j)->index(owner));
+    }
+    return facets;
+  };
+  std::vector<DT::Facet> got;
+  LOC::Closed_surface_report report;
+  if(interior.empty()) {
+    const LI::Automatic_interior expected = full_most_persistent_void(graph, sinks);
+    report = CGAL::lex_optimal_closed_surface(dt, std::back_inserter(got),
+                                              LOC::parameters::minimum_interior_persistence(0.0, LOC::parameters::exterior_points(exterior)));
+    assert(report.interior_persistence == expected.persistence);
+    assert(got == full_cut(std::vector<std::uint32_t>{expected.cell}));
+    // other single sources, through the spanning tree of the contracted pass
+    LI::Contracted_dual_graph_3<DT> contracted(dt, graph.cell_positions(), std::vector<std::uint32_t>(), sinks, always);
+    std::vector<std::uint32_t> labels(graph.number_of_cells());
+    for(std::uint32_t c = 0; c < labels.size(); ++c) labels[c] = contracted.sets().find(c);
+    std::vector<std::uint32_t> tree;
+    const LI::Automatic_interior a = LI::most_persistent_void(contracted, tree);
+    assert(a.cell == expected.cell);
+    std::size_t contractions = 0;
+    for(std::uint32_t c = 0; c < labels.size(); ++c)
+      contractions += contracted.across()[c] != c && !(contracted.across()[contracted.across()[c]] == c && contracted.across()[c] < c);
+    assert(tree.size() + contractions == graph.number_of_cells() - sinks.size()); // a spanning tree, sinks contracted
+    const std::vector<std::uint32_t> tree_copy = tree;
+    CGAL::Random pick(7);
+    for(int k = 0; k < extra_sources; ++k) {
+      std::uint32_t s;
+      do s = std::uint32_t(pick.get_int(0, int(graph.number_of_cells())));
+      while(std::binary_search(sinks.begin(), sinks.end(), s));
+      LI::Contracted_dual_graph_3<DT> again(dt, graph.cell_positions(), std::vector<std::uint32_t>(), sinks, always);
+      std::vector<std::uint32_t> again_labels(labels.size()), again_tree;
+      for(std::uint32_t c = 0; c < labels.size(); ++c) again_labels[c] = again.sets().find(c);
+      LI::most_persistent_void(again, again_tree);
+      assert(again_tree == tree_copy);
+      std::vector<bool> inside;
+      const auto cut = LI::lexicographic_closed_cut_from_tree(again, again_labels, again_tree, s, sinks, inside, always);
+      std::vector<DT::Facet> facets;
+      for(const auto& r : cut) {
+        const auto owner = graph.cell(Full_graph::owner_position(r));
+        const int j = Full_graph::facet_index(r);
+        if(inside[Full_graph::owner_position(r)]) facets.emplace_back(owner, j);
+        else facets.emplace_back(owner->neighbor(j), owner->neighbor(j)->index(owner));
+      }
+      assert(facets == full_cut(std::vector<std::uint32_t>{s}));
+    }
+  } else {
+    report = CGAL::lex_optimal_closed_surface(dt, std::back_inserter(got),
+                                              LOC::parameters::exterior_points(exterior, LOC::parameters::interior_points(interior)));
+    assert(got == full_cut(cells_of(dt, graph, interior)));
+  }
+  std::cout << what << ": the contracted cut equals Algorithm 8 over all " << graph.records().size()
+            << " facets (" << got.size() << " facets cut";
+  if(extra_sources > 0) std::cout << ", and from " << extra_sources << " other sources";
+  std::cout << ")\n";
 }
 
 int main(int argc, char** argv)
@@ -255,27 +396,27 @@ int main(int argc, char** argv)
   // --- torus: genus 1 ----------------------------------------------------------------------------
   {
     const std::vector<Point> pts = sample_torus(30000, 1.0, 0.35, 0.001);
+    check_against_full_algorithm_8(pts, {}, {}, "torus", 12);
     {
-      // Algorithm 8 over all triangles equals Algorithm 8 over the spanning tree of the
-      // persistence pass followed by the scan of the triangles between inside and outside
-      DT dt(pts.begin(), pts.end());
-      namespace LI = LOC::internal;
-      LI::Sorted_dual_graph_3<DT> graph(dt, [](double) { return true; });
-      std::vector<DT::Cell_handle> hull;
-      dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
-      std::vector<std::uint32_t> sinks;
-      for(const auto& c : hull) sinks.push_back(graph.position(c));
-      std::sort(sinks.begin(), sinks.end());
-      std::vector<std::uint32_t> tree;
-      const LI::Automatic_interior a = LI::most_persistent_void(graph, sinks, tree);
-      assert(tree.size() == graph.number_of_cells() - sinks.size()); // a spanning tree (sinks contracted)
-      auto always = [](double) { return true; };
-      std::vector<bool> inside_full, inside_tree;
-      const auto full = LI::lexicographic_closed_cut(graph, std::vector<std::uint32_t>{a.cell}, sinks, inside_full, always);
-      const auto fast = LI::lexicographic_closed_cut_from_tree(graph, tree, a.cell, sinks, inside_tree, always);
-      assert(inside_full == inside_tree && full.size() == fast.size());
-      for(std::size_t i = 0; i < full.size(); ++i) assert(full[i].owner == fast[i].owner && full[i].other == fast[i].other);
-      std::cout << "torus: the cut from the spanning tree equals Algorithm 8 (" << full.size() << " facets)\n";
+      // two nested spheres, exterior points, a uniform cloud (no surface: the persistence is
+      // small and the sources are anywhere), full grids (exact ties everywhere)
+      std::vector<Point> nested = sample_sphere(6000, Point(0, 0, 0), 1.0, 0.002);
+      const std::vector<Point> inner = sample_sphere(3000, Point(0.1, 0, 0), 0.5, 0.002);
+      nested.insert(nested.end(), inner.begin(), inner.end());
+      check_against_full_algorithm_8(nested, {}, {}, "nested spheres", 8);
+      check_against_full_algorithm_8(nested, {Point(0.1, 0.01, 0.02)}, {Point(0.8, 0.01, 0.02), Point(5, 5, 5)},
+                                     "nested spheres with constraints");
+      std::vector<Point> cloud;
+      for(int i = 0; i < 4000; ++i) cloud.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
+      check_against_full_algorithm_8(cloud, {}, {}, "uniform cloud", 8);
+      for(int g : {2, 3, 6}) {
+        std::vector<Point> grid;
+        for(int i = 0; i <= g; ++i)
+          for(int j = 0; j <= g; ++j)
+            for(int k = 0; k <= g; ++k) grid.emplace_back(i, j, k);
+        check_against_full_algorithm_8(grid, {}, {}, "full grid", 6);
+        check_against_full_algorithm_8(grid, {Point(0.5 + 0.01, 0.5 + 0.02, 0.5 + 0.03)}, {}, "full grid with interior");
+      }
     }
     const LOC::Closed_surface_report r = reconstruct(pts, m);
     check_mesh(m, r, pts);

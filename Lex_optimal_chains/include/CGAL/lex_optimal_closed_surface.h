@@ -65,9 +65,10 @@ struct Closed_surface_report
 
 namespace internal {
 
-// Cells (by position in the graph) that hold the constraint points.
-template <class Triangulation, class Graph, class PointRange>
-std::vector<std::uint32_t> constraint_cells(const Triangulation& dt, const Graph& graph,
+// Cells (by position in the cell container) that hold the constraint points.
+template <class Triangulation, class PointRange>
+std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
+                                            const Handle_index_map<typename Triangulation::Cell>& positions,
                                             const PointRange& points, bool interior)
 {
   std::vector<std::uint32_t> cells;
@@ -95,7 +96,7 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt, const Graph
         msg << "interior point (" << p << ") is not inside the convex hull of the points";
         throw Input_error(Input_error_code::CONSTRAINT_OUTSIDE_HULL, msg.str());
       }
-      cells.push_back(graph.position(ic));
+      cells.push_back(positions.index(&*ic));
     }
   }
   std::sort(cells.begin(), cells.end());
@@ -127,31 +128,24 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   const double span = 1.0 - progress_from;
   Stopwatch watch;
 
-  Sorted_dual_graph_3<Triangulation> graph(dt, Stage_progress{&callback, progress_from, progress_from + 0.6 * span});
+  using Graph = Sorted_dual_graph_3<Triangulation>;
+  const Handle_index_map<typename Triangulation::Cell> cells(dt.tds().cells().begin(), dt.tds().cells().end());
   report.number_of_vertices = dt.number_of_vertices();
-  report.number_of_triangles = graph.records().size();
-  report.number_of_exactly_ordered_triangles = graph.number_of_exactly_sorted_records();
-  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
-  report.order_seconds = watch.lap();
-  if(verbose)
-    std::cerr << "Lex_optimal_chains: ordered " << graph.records().size() << " triangles ("
-              << graph.number_of_records_in_runs() << " in close runs, " << graph.number_of_exactly_sorted_records() << " exactly) in " << report.order_seconds << " s (keys "
-              << graph.key_seconds() << " s, radix sort " << graph.sort_seconds() << " s, exact runs "
-              << graph.repair_seconds() << " s)\n";
+  report.number_of_triangles = Graph::number_of_finite_facets(dt);
 
   std::vector<std::uint32_t> infinite;
   {
     std::vector<typename Triangulation::Cell_handle> hull;
     dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
-    for(const auto& c : hull) infinite.push_back(graph.position(c));
+    for(const auto& c : hull) infinite.push_back(cells.index(&*c));
   }
   // the ranges are used within the full expressions that read them: CGAL 5.5 returns
   // copyable parameters by value
   const std::vector<Point> no_points;
   std::vector<std::uint32_t> sources = constraint_cells(
-    dt, graph, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::interior_points), no_points), true);
+    dt, cells, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::interior_points), no_points), true);
   std::vector<std::uint32_t> sinks = constraint_cells(
-    dt, graph, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::exterior_points), no_points), false);
+    dt, cells, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::exterior_points), no_points), false);
   sinks.insert(sinks.end(), infinite.begin(), infinite.end());
   std::sort(sinks.begin(), sinks.end());
   sinks.erase(std::unique(sinks.begin(), sinks.end()), sinks.end());
@@ -159,12 +153,31 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     if(std::binary_search(sinks.begin(), sinks.end(), s))
       throw Input_error(Input_error_code::CONFLICTING_CONSTRAINTS,
                         "an interior point and an exterior point lie in the same Delaunay cell");
+
+  // the contraction of every cell with the cell across its largest facet, and the sorted
+  // facets between the components (internal/Closed_surface_cut_3.h)
+  Contracted_dual_graph_3<Triangulation> contracted(dt, cells, sources, sinks,
+                                                    Stage_progress{&callback, progress_from, progress_from + 0.6 * span});
+  const Graph& graph = contracted.graph(); // released after the cut
+  report.number_of_exactly_ordered_triangles = contracted.number_of_exact_comparisons() + graph.number_of_exactly_sorted_records();
+  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
+  report.order_seconds = watch.lap();
+  if(verbose)
+    std::cerr << "Lex_optimal_chains: contracted the cells across their largest facets ("
+              << contracted.number_of_exact_comparisons() << " comparisons made exactly), then ordered the "
+              << graph.records().size() << " triangles between components (" << graph.number_of_records_in_runs()
+              << " in close runs, " << graph.number_of_exactly_sorted_records() << " exactly) in "
+              << report.order_seconds << " s (keys " << graph.key_seconds() << " s, radix sort "
+              << graph.sort_seconds() << " s, exact runs " << graph.repair_seconds() << " s)\n";
+
   const Stage_progress cut_progress{&callback, progress_from + 0.6 * span, progress_from + 0.8 * span};
   std::vector<Dual_edge_record> cut;
   if(sources.empty()) {
     const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
+    std::vector<std::uint32_t> labels(cells.size()); // the components of the contraction
+    for(std::uint32_t c = 0; c < labels.size(); ++c) labels[c] = contracted.sets().find(c);
     std::vector<std::uint32_t> spanning_tree;
-    const Automatic_interior a = most_persistent_void(graph, sinks, spanning_tree);
+    const Automatic_interior a = most_persistent_void(contracted, spanning_tree);
     report.automatic_interior = true;
     report.interior_persistence = a.persistence;
     if(!(a.persistence >= minimum)) {
@@ -177,23 +190,25 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     if(verbose)
       std::cerr << "Lex_optimal_chains: automatic interior cell, persistence " << a.persistence << "\n";
     // the Kruskal pass of the persistence also gave the spanning tree: Algorithm 8 needs no
-    // second pass over all the triangles
-    cut = lexicographic_closed_cut_from_tree(graph, spanning_tree, a.cell, sinks, inside, cut_progress);
+    // second pass over the triangles
+    cut = lexicographic_closed_cut_from_tree(contracted, labels, spanning_tree, a.cell, sinks, inside, cut_progress);
   } else {
-    cut = lexicographic_closed_cut(graph, sources, sinks, inside, cut_progress);
+    cut = lexicographic_closed_cut(contracted, inside, cut_progress);
   }
+  contracted.release_graph();
   std::vector<typename Triangulation::Facet> facets;
   facets.reserve(cut.size());
   for(std::size_t i = 0; i < cut.size(); ++i) {
-    if(i + 8 < cut.size()) graph.prefetch_owner(cut[i + 8]);
+    if(i + 8 < cut.size()) prefetch_object(cells.element(Graph::owner_position(cut[i + 8])));
     const Dual_edge_record& r = cut[i];
-    const auto owner = graph.cell(Sorted_dual_graph_3<Triangulation>::owner_position(r));
-    const int j = Sorted_dual_graph_3<Triangulation>::facet_index(r);
-    if(inside[Sorted_dual_graph_3<Triangulation>::owner_position(r)]) facets.emplace_back(owner, j);
+    const auto owner = dt.tds().cells().iterator_to(
+      *const_cast<typename Triangulation::Cell*>(cells.element(Graph::owner_position(r))));
+    const int j = Graph::facet_index(r);
+    if(inside[Graph::owner_position(r)]) facets.emplace_back(owner, j);
     else facets.emplace_back(owner->neighbor(j), owner->neighbor(j)->index(owner));
   }
   report.number_of_facets = facets.size();
-  if(positions != nullptr) *positions = graph.cell_positions();
+  if(positions != nullptr) *positions = cells;
   report.cut_seconds = watch.lap();
   if(verbose)
     std::cerr << "Lex_optimal_chains: cut " << facets.size() << " facets in " << report.cut_seconds << " s\n";

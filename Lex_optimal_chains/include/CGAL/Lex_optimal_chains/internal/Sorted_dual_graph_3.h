@@ -19,6 +19,10 @@
 // them (and all exact ties: obtuse triangles sharing their longest edge) and sorts each
 // such run with the exact comparator. Records whose key could not be certified are
 // placed at a lower bound of their R_B^2 and widen the run up to their upper bound.
+//
+// A filter can restrict the records to some facets (for the closed surfaces, those between
+// the components left by the contraction of internal/Largest_facets_3.h): the keys of the
+// other facets are then not even computed.
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
@@ -134,16 +138,25 @@ public:
   static constexpr int q_bits = 19;
   static constexpr double max_q_error = 1.0 / (1ull << 30);
 
-  // `progress(fraction)` returns false to cancel.
+  // All the finite facets. `progress(fraction)` returns false to cancel.
   template <class Progress>
   Sorted_dual_graph_3(const Triangulation& dt, const Progress& progress)
-    : dt_(dt), cells_(dt.tds().cells().begin(), dt.tds().cells().end())
+    : Sorted_dual_graph_3(dt, Handle_index_map<Cell>(dt.tds().cells().begin(), dt.tds().cells().end()), progress,
+                          [](std::uint32_t, std::uint32_t) { return true; })
+  {}
+
+  // The finite facets between the cells at positions `a` and `b` (in the numbering `cells`
+  // of the cell container, in iteration order) for which `keep(a, b)` is true.
+  template <class Progress, class Keep>
+  Sorted_dual_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells, const Progress& progress,
+                      Keep&& keep)
+    : dt_(dt), cells_(cells)
   {
     if(cells_.size() >= (std::size_t(1) << 30))
       throw Input_error(Input_error_code::TOO_LARGE,
                         "the triangulation has 2^30 cells or more: split the points into tiles");
     auto t0 = std::chrono::steady_clock::now();
-    build_records(progress);
+    build_records(progress, keep);
     auto t1 = std::chrono::steady_clock::now();
     sort_records(progress);
     auto t2 = std::chrono::steady_clock::now();
@@ -196,15 +209,7 @@ public:
     return facet_coordinates(cell(owner_position(r)), facet_index(r));
   }
 
-  static Triangle_coordinates_3 facet_coordinates(Cell_handle c, int j)
-  {
-    Triangle_coordinates_3 t;
-    for(int k = 0; k < 3; ++k) {
-      const auto& p = c->vertex((j + 1 + k) & 3)->point();
-      t[k] = Coordinates_3{{p.x(), p.y(), p.z()}};
-    }
-    return t;
-  }
+  static Triangle_coordinates_3 facet_coordinates(Cell_handle c, int j) { return facet_coordinates(*c, j); }
 
   // number of records that the fast keys did not order, and of those that the exact
   // comparator had to order (statistics)
@@ -212,13 +217,11 @@ public:
   std::size_t number_of_exactly_sorted_records() const { return exactly_sorted_; }
 
 private:
-  template <class Progress>
-  void build_records(const Progress& progress)
+  template <class Progress, class Keep>
+  void build_records(const Progress& progress, Keep& keep)
   {
-    std::vector<Cell_handle> hull;
-    dt_.incident_cells(dt_.infinite_vertex(), std::back_inserter(hull));
-    const std::size_t facets = 2 * cells_.size() - (3 * hull.size()) / 2;
-    records_.reserve(facets);
+    // reserved for all the facets: the pages that a filter leaves unused are never touched
+    records_.reserve(number_of_finite_facets(dt_));
 
     // Each finite facet is written once, by the cell of lower address among its two cells;
     // an infinite cell writes its finite facet from the side of its finite neighbor. No
@@ -243,25 +246,52 @@ private:
       if(infinite_index >= 0) {
         const Cell_handle n = c.neighbor(infinite_index);
         if(std::less<const Cell*>()(&*n, &c)) continue;
-        add_record(*n, cells_.index(&*n), n->index(cell(pos)), pos);
+        const std::uint32_t n_pos = cells_.index(&*n);
+        if(keep(n_pos, pos)) add_record(*n, n_pos, n->index(cell(pos)), pos);
         continue;
       }
       for(int j = 0; j < 4; ++j) {
         const Cell* n = &*c.neighbor(j);
         if(std::less<const Cell*>()(n, &c)) continue;
-        add_record(c, pos, j, cells_.index(n));
+        const std::uint32_t n_pos = cells_.index(n);
+        if(keep(pos, n_pos)) add_record(c, pos, j, n_pos);
       }
     }
-    CGAL_assertion(records_.size() == facets);
   }
 
   void add_record(const Cell& c, std::uint32_t pos, int j, std::uint32_t other)
+  {
+    std::uint64_t upper;
+    Record r = make_record(facet_coordinates(c, j), pos, j, other, upper);
+    if(r.key & 1) uncertain_upper_.emplace(r.owner, upper);
+    records_.push_back(r);
+  }
+
+public:
+  // The number of finite facets of `dt` (of dimension 3).
+  static std::size_t number_of_finite_facets(const Triangulation& dt)
+  {
+    std::vector<Cell_handle> hull;
+    dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
+    return 2 * dt.tds().number_of_cells() - (3 * hull.size()) / 2;
+  }
+
+  static Triangle_coordinates_3 facet_coordinates(const Cell& c, int j)
   {
     Triangle_coordinates_3 t;
     for(int k = 0; k < 3; ++k) {
       const auto& p = c.vertex((j + 1 + k) & 3)->point();
       t[k] = Coordinates_3{{p.x(), p.y(), p.z()}};
     }
+    return t;
+  }
+
+  // The record of the facet `j` of the cell at position `pos` whose vertices, in the order
+  // of the facet, are `t`; `upper` receives the upper bound of the code of R_B^2 when the
+  // key is only a lower bound (bit 0 set).
+  static Record make_record(const Triangle_coordinates_3& t, std::uint32_t pos, int j, std::uint32_t other,
+                            std::uint64_t& upper)
+  {
     const Approximate_radii_3 a = approximate_radii(t);
     Record r;
     r.owner = (pos << 2) | std::uint32_t(j);
@@ -273,14 +303,17 @@ private:
         q = std::uint64_t((std::min)(1.0, a.rb2 / a.rc2) * double((std::uint64_t(1) << q_bits) - 1));
       }
       r.key = (double_bits(a.rb2) & ~((std::uint64_t(1) << dropped_bits) - 1)) | (q << 1);
+      upper = r.key >> dropped_bits;
     } else {
       const std::pair<double, double> range = enclosure_of_squared_rb(t);
       r.key = double_bits(range.first) | 1;
-      uncertain_upper_.emplace(r.owner, double_bits(range.second) >> dropped_bits);
+      upper = double_bits(range.second) >> dropped_bits;
     }
     r.other = other | (std::uint32_t(longest) << 30);
-    records_.push_back(r);
+    return r;
   }
+
+private:
 
   // An interval that certainly contains R_B^2, for triangles the fast path could not bound.
   static std::pair<double, double> enclosure_of_squared_rb(const Triangle_coordinates_3& t)

@@ -188,17 +188,15 @@ struct Approximate_radii_3
   int longest = -1; // index of the vertex opposite the longest edge if certainly obtuse, else -1
 };
 
-inline Approximate_radii_3 approximate_radii(const Triangle_coordinates_3& t)
+// The radii of the triangle (p, q, r) from the rounded differences a = q - p and b = r - p and
+// the squared lengths l0 = |r - q|^2, l1 = |b|^2, l2 = |a|^2, each computed as in
+// `approximate_radii()` (the signs of a and b do not matter: they only change the sign of
+// the normal).
+inline Approximate_radii_3 approximate_radii_from_edges(double ax, double ay, double az, double bx, double by,
+                                                        double bz, double l0, double l1, double l2)
 {
   constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
   constexpr double inf = std::numeric_limits<double>::infinity();
-  const Coordinates_3 &p = t[0], &q = t[1], &r = t[2];
-  const double ax = q[0] - p[0], ay = q[1] - p[1], az = q[2] - p[2];
-  const double bx = r[0] - p[0], by = r[1] - p[1], bz = r[2] - p[2];
-  const double cx = r[0] - q[0], cy = r[1] - q[1], cz = r[2] - q[2];
-  const double l2 = ax * ax + ay * ay + az * az; // opposite r
-  const double l1 = bx * bx + by * by + bz * bz; // opposite q
-  const double l0 = cx * cx + cy * cy + cz * cz; // opposite p
   int longest = 0;
   double m = l0;
   if(l1 > m) { m = l1; longest = 1; }
@@ -232,6 +230,18 @@ inline Approximate_radii_3 approximate_radii(const Triangle_coordinates_3& t)
   }
   if(!(res.rb_error < 0.25)) res.rb_error = inf;
   return res;
+}
+
+inline Approximate_radii_3 approximate_radii(const Triangle_coordinates_3& t)
+{
+  const Coordinates_3 &p = t[0], &q = t[1], &r = t[2];
+  const double ax = q[0] - p[0], ay = q[1] - p[1], az = q[2] - p[2];
+  const double bx = r[0] - p[0], by = r[1] - p[1], bz = r[2] - p[2];
+  const double cx = r[0] - q[0], cy = r[1] - q[1], cz = r[2] - q[2];
+  const double l2 = ax * ax + ay * ay + az * az; // opposite r
+  const double l1 = bx * bx + by * by + bz * bz; // opposite q
+  const double l0 = cx * cx + cy * cy + cz * cz; // opposite p
+  return approximate_radii_from_edges(ax, ay, az, bx, by, bz, l0, l1, l2);
 }
 
 // R_B^2 with a relative error below `max_relative_error`, or false.
