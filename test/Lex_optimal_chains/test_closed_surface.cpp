@@ -367,7 +367,8 @@ int main(int argc, char** argv)
         }
     std::size_t split_edges = 0;
     for(const auto& e : edge_facets) split_edges += e.second > 2;
-    const LOC::internal::Closed_surface_mesh_3<DT> surface(facets, cells, vertex_positions, inside);
+    const std::size_t number_of_facets = facets.size();
+    const LOC::internal::Closed_surface_mesh_3<DT> surface(std::move(facets), cells, vertex_positions, inside);
     Mesh union_mesh;
     surface.build(union_mesh, union_mesh.points());
     assert(CGAL::is_valid_polygon_mesh(union_mesh) && CGAL::is_closed(union_mesh) && CGAL::is_triangle_mesh(union_mesh));
@@ -379,7 +380,7 @@ int main(int argc, char** argv)
       std::sort(t.begin(), t.end());
       got.insert(t);
     }
-    std::cout << "union of cells (seed " << seed << "): " << facets.size() << " facets, " << at_hub << " at the hub, "
+    std::cout << "union of cells (seed " << seed << "): " << number_of_facets << " facets, " << at_hub << " at the hub, "
               << surface.statistics().non_manifold_edges << " split edges (brute force " << split_edges << "), "
               << surface.statistics().non_manifold_vertices << " split vertices\n";
     assert(got == expected);

@@ -45,8 +45,8 @@ struct Closed_surface_report
   std::size_t number_of_input_points = 0;      ///< points given (reconstruction only)
   std::size_t number_of_vertices = 0;          ///< vertices of the triangulation
   std::size_t number_of_triangles = 0;         ///< finite facets of the triangulation (dual edges)
-  std::size_t number_of_triangles_in_close_runs = 0;  ///< triangles whose fast keys were too close to be ordered by them
-  std::size_t number_of_exactly_ordered_triangles = 0; ///< of those, triangles ordered by the exact comparator
+  std::size_t number_of_triangles_in_close_runs = 0;  ///< triangles whose fast keys were too close to be ordered by them (among the triangles sorted: those left between components by the contraction along the largest triangles of the cells)
+  std::size_t number_of_exactly_ordered_triangles = 0; ///< triangles ordered by the exact comparator in that sort, plus the comparisons of the contraction made exactly
   std::size_t number_of_facets = 0;            ///< facets of the optimal 2-cycle
   bool automatic_interior = false;             ///< true if the interior cell was chosen automatically
   double interior_persistence = 0;             ///< persistence ratio of the automatic interior
@@ -104,7 +104,7 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
   return cells;
 }
 
-// The common part: sorted dual graph, constraints, Algorithm 8. Returns the facets of the
+// The common part: constraints, contracted and sorted dual graph, Algorithm 8. Returns the facets of the
 // optimal cycle, each as (inside cell, index), in decreasing order; fills `inside`, indexed
 // by the cell numbering it copies to `positions` when that is not null.
 template <class Triangulation, class NamedParameters>
@@ -308,7 +308,7 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
     watch.lap();
     const Handle_index_map<typename Triangulation::Vertex> vertex_positions(dt.tds().vertices().begin(),
                                                                             dt.tds().vertices().end());
-    surface.reset(new Closed_surface_mesh_3<Triangulation>(facets, positions, vertex_positions, inside));
+    surface.reset(new Closed_surface_mesh_3<Triangulation>(std::move(facets), positions, vertex_positions, inside));
   }
   // the triangulation (ours) is freed before the mesh is built: peak memory
   const double extraction_seconds = watch.lap();

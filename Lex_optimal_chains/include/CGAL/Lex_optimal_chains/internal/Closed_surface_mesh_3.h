@@ -57,13 +57,16 @@ public:
 
   using Cell = typename Triangulation::Cell;
 
-  // `facets`: the boundary facets, each given by its inside cell; `cells` numbers the cells
-  // and `inside[cells.index(c)]` tells if a cell is inside; `vertex_positions` numbers the
-  // vertices.
-  Closed_surface_mesh_3(const std::vector<Facet>& facets, const Handle_index_map<Cell>& cells,
+  // `facets`: the boundary facets, each given by its inside cell (emptied here: the mesh is
+  // built while the triangulation is still there, at the peak of memory); `cells` numbers the
+  // cells and `inside[cells.index(c)]` tells if a cell is inside; `vertex_positions` numbers
+  // the vertices.
+  Closed_surface_mesh_3(std::vector<Facet>&& given_facets, const Handle_index_map<Cell>& cells,
                         const Handle_index_map<Vertex>& vertex_positions, const std::vector<bool>& inside)
-    : cells_(cells), inside_(inside)
+    : cells_(cells), vertices_(vertex_positions), inside_(inside)
   {
+    std::vector<Facet> facets;
+    facets.swap(given_facets);
     const std::size_t nf = facets.size();
     // Internally the facets are kept in the order of their cells in memory, so that the
     // corners, edges and umbrellas are read nearby; `rank_of_` keeps the given (canonical)
@@ -79,6 +82,7 @@ public:
         facets_[k] = facets[std::uint32_t(order[k])];
         rank_of_[k] = std::uint32_t(order[k]);
       }
+      std::vector<Facet>().swap(facets);
     }
     // corners: the outward vertices of each facet, rotated to start at the lexicographically
     // smallest point, so that the output does not depend on the vertex order in the cells
@@ -90,13 +94,13 @@ public:
       int first = 0;
       for(int i = 1; i < 3; ++i)
         if(CGAL::compare_xyz(v[i]->point(), v[first]->point()) == SMALLER) first = i;
-      for(int i = 0; i < 3; ++i) corners_[3 * k + i] = v[(first + i) % 3];
+      for(int i = 0; i < 3; ++i) corners_[3 * k + i] = vertex_positions.index(&*v[(first + i) % 3]);
     }
     // twins: an edge of the triangulation with exactly two boundary facets joins them (the
     // boundary of a union of cells is a cycle, so no other facet can be met when turning
     // around it); they are found by bucketing the half-edges by their smaller vertex
     twin_.assign(3 * nf, UINT32_MAX);
-    if(pair_twins_by_vertices(vertex_positions) < 3 * nf) {
+    if(pair_twins_by_vertices() < 3 * nf) {
       // non-manifold edges (four or more boundary facets): turn around them through the
       // inside cells. Facet lookup: (cell position, index) -> position in `facets_`, by
       // open addressing with a monotone hash (keys are spread evenly over [0, 4 * cells),
@@ -158,8 +162,8 @@ public:
     stats_.faces = nf;
     {
       std::vector<std::uint8_t> copies_of(vertex_positions.size(), 0);
-      for(const Vertex_handle& v : copies_) {
-        std::uint8_t& n = copies_of[vertex_positions.index(&*v)];
+      for(const std::uint32_t v : copies_) {
+        std::uint8_t& n = copies_of[v];
         if(n == 1) ++stats_.non_manifold_vertices;
         n = std::uint8_t((std::min)(int(n) + 1, 2));
       }
@@ -182,9 +186,9 @@ public:
     // keep only what `build()` needs, without references into the triangulation, so that
     // the caller may free the triangulation before the mesh is built
     points_.reserve(copies_.size());
-    for(const Vertex_handle& v : copies_) points_.push_back(v->point());
-    std::vector<Vertex_handle>().swap(copies_);
-    std::vector<Vertex_handle>().swap(corners_);
+    for(const std::uint32_t v : copies_) points_.push_back(vertices_.element(v)->point());
+    std::vector<std::uint32_t>().swap(copies_);
+    std::vector<std::uint32_t>().swap(corners_);
     std::vector<Facet>().swap(facets_);
     std::vector<Slot>().swap(table_);
     // half-edges and corners renumbered in the canonical order of the facets (3 * rank + e),
@@ -278,15 +282,13 @@ private:
   std::uint32_t next_corner_around_vertex(std::uint32_t c) const { return twin_[3 * (c / 3) + (c % 3 + 2) % 3]; }
 
   // Sets the twins of the half-edges whose edge bounds exactly two facets and counts the
-  // edges of more facets; returns how many half-edges got their twin. `vertex_positions`
-  // numbers the vertices.
-  std::size_t pair_twins_by_vertices(const Handle_index_map<Vertex>& vertex_positions)
+  // edges of more facets; returns how many half-edges got their twin.
+  std::size_t pair_twins_by_vertices()
   {
     const std::uint32_t nh = std::uint32_t(corners_.size());
-    std::vector<std::uint32_t> id(nh); // vertex number of each corner
-    for(std::uint32_t c = 0; c < nh; ++c) id[c] = vertex_positions.index(&*corners_[c]);
+    const std::vector<std::uint32_t>& id = corners_; // vertex number of each corner
     std::size_t paired = 0;
-    for_each_edge_group(vertex_positions.size(), nh, [&](std::uint32_t c) { return id[c]; },
+    for_each_edge_group(vertices_.size(), nh, [&](std::uint32_t c) { return id[c]; },
                         [&](const std::uint32_t* first, const std::uint32_t* last) {
                           if(last - first != 2) { // a non-manifold edge (four or more): split
                             ++stats_.non_manifold_edges;
@@ -301,22 +303,22 @@ private:
     return paired;
   }
 
-  // DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
-  Vertex_handle vertex(std::uint32_t c) const { return corners_[c]; }
+  // number of the DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
+  std::uint32_t vertex(std::uint32_t c) const { return corners_[c]; }
 
   // Half-edge 3k+e goes from outward vertex e to outward vertex e+1 of facet k. Its twin is
   // the boundary half-edge met first when turning around that edge through inside cells.
   std::uint32_t find_twin(std::size_t k, int e) const
   {
-    const Vertex_handle u = vertex(std::uint32_t(3 * k + e));
-    const Vertex_handle v = vertex(std::uint32_t(3 * k + (e + 1) % 3));
+    const Vertex* u = vertices_.element(vertex(std::uint32_t(3 * k + e)));
+    const Vertex* v = vertices_.element(vertex(std::uint32_t(3 * k + (e + 1) % 3)));
     Cell_handle cur = facets_[k].first;
-    Vertex_handle behind = cur->vertex(facets_[k].second); // we "arrive" through the facet opposite it
+    const Vertex* behind = &*cur->vertex(facets_[k].second); // we "arrive" through the facet opposite it
     for(std::size_t guard = 0;; ++guard) {
       CGAL_assertion(guard < 100000);
       int q = -1;
       for(int i = 0; i < 4; ++i) {
-        const Vertex_handle w = cur->vertex(i);
+        const Vertex* w = &*cur->vertex(i);
         if(w != u && w != v && w != behind) { q = i; break; }
       }
       CGAL_assertion(q >= 0);
@@ -324,10 +326,11 @@ private:
       if(!is_inside(next)) {
         const std::uint32_t k2 = position(cur, q);
         for(int e2 = 0; e2 < 3; ++e2)
-          if(vertex(3 * k2 + e2) == v && vertex(3 * k2 + (e2 + 1) % 3) == u) return 3 * k2 + e2;
+          if(vertices_.element(vertex(3 * k2 + e2)) == v && vertices_.element(vertex(3 * k2 + (e2 + 1) % 3)) == u)
+            return 3 * k2 + e2;
         CGAL_error_msg("inconsistent orientation around an edge");
       }
-      behind = next->vertex(next->index(cur)); // the vertex of `next` facing away from `cur`
+      behind = &*next->vertex(next->index(cur)); // the vertex of `next` facing away from `cur`
       cur = next;
     }
   }
@@ -335,12 +338,13 @@ private:
   std::vector<Facet> facets_;       // in the order of their cells in memory
   std::vector<std::uint32_t> rank_of_; // index in `facets_` -> canonical rank
   const Handle_index_map<Cell>& cells_;
+  const Handle_index_map<Vertex>& vertices_;
   const std::vector<bool>& inside_;
   std::vector<Slot> table_;
   std::vector<std::uint32_t> twin_;
-  std::vector<Vertex_handle> corners_;
+  std::vector<std::uint32_t> corners_;       // vertex numbers, 3 per facet
   std::vector<std::uint32_t> corner_vertex_;
-  std::vector<Vertex_handle> copies_;
+  std::vector<std::uint32_t> copies_;        // vertex number of each copy
   std::vector<typename Triangulation::Point> points_; // of the copies, for build()
   Closed_surface_statistics stats_;
 };
