@@ -51,7 +51,7 @@ struct Closed_surface_report
   bool automatic_interior = false;             ///< true if the interior cell was chosen automatically
   double interior_persistence = 0;             ///< persistence ratio of the automatic interior
   double delaunay_seconds = 0;                 ///< time to build the Delaunay triangulation
-  double order_seconds = 0;                    ///< time to sort the triangles
+  double order_seconds = 0;                    ///< time to order the triangles (largest triangle of each cell, contraction, sort of the others)
   double cut_seconds = 0;                      ///< time of the automatic interior and of Algorithm 8
   double output_seconds = 0;                   ///< time to build the mesh
   double total_seconds = 0;                    ///< time of the whole call

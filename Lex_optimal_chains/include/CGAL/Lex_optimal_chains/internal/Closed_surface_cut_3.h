@@ -22,7 +22,6 @@
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Largest_facets_3.h>
-#include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Union_find.h>
@@ -289,7 +288,8 @@ std::vector<Dual_edge_record> lexicographic_closed_cut(Contracted_dual_graph_3<T
 // cuts, among the tree edges, the smallest one on the tree path from the source to the sinks,
 // and its final source component is the source's side of the tree without that edge. The cut
 // is then every facet between an inside and an outside cell. `labels` are the components of
-// the contraction (the roots before `most_persistent_void()`).
+// the contraction (the roots before `most_persistent_void()`). Consumes `contracted`: its
+// disjoint sets are reused and its sorted facets may be released.
 template <class Triangulation, class Progress>
 std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual_graph_3<Triangulation>& contracted,
                                                                  const std::vector<std::uint32_t>& labels,
@@ -394,7 +394,8 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
     cut_a = Graph::owner_position(r);
     cut_b = Graph::other_position(r);
   }
-  Union_find sides(n);
+  Union_find& sides = contracted.sets(); // the contraction's sets are not needed any more
+  sides.reset(n);
   std::uint32_t sink_root = sides.find(sinks.front());
   for(std::uint32_t s : sinks) sink_root = sides.unite(sink_root, s);
   for(std::uint32_t c = 0; c < n; ++c) {

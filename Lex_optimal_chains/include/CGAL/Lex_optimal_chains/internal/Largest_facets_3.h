@@ -46,10 +46,9 @@ struct Cell_facets_3
   double edge[4][4][3]; // edge[i][k], i < k: point[k] - point[i] (edge(k, i) = -edge(i, k) exactly)
   double length[4][4];  // squared lengths, symmetric
   Approximate_radii_3 radii[4]; // facet j: the vertices (j+1)&3, (j+2)&3, (j+3)&3
-  // 0: nothing known, 1: the largest squared edge `longest[j]` and, if the facet is certainly
-  // obtuse, R_B (`radii[j].rb2`, `rb_error`, `longest`), 2: all of `radii[j]`
+  // 0: nothing known, 1: the facet is certainly obtuse and R_B is known (`radii[j].rb2`,
+  // `rb_error`, `longest`), 2: all of `radii[j]`
   int known[4] = {0, 0, 0, 0};
-  double longest[4];
 
   template <class Cell>
   explicit Cell_facets_3(const Cell& c)
@@ -82,7 +81,6 @@ struct Cell_facets_3
     double m = l0;
     if(l1 > m) { m = l1; index = 1; }
     if(l2 > m) { m = l2; index = 2; }
-    longest[j] = m;
     const double s = l0 + l1 + l2 - m;
     constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
     if(m > s * (1 + 64 * u)) {
@@ -103,7 +101,6 @@ struct Cell_facets_3
     const double* b = edge[(std::min)(p, r)][(std::max)(p, r)]; // +-(r - p)
     radii[j] = approximate_radii_from_edges(a[0], a[1], a[2], b[0], b[1], b[2], length[q][r], length[p][r],
                                             length[p][q]);
-    if(known[j] == 0) longest[j] = (std::max)(length[q][r], (std::max)(length[p][r], length[p][q]));
     known[j] = 2;
   }
 
