@@ -349,14 +349,14 @@ int main(int argc, char** argv)
     std::vector<bool> inside(cells.size(), false);
     for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
       inside[cells.index(&*c)] = (c->has_vertex(hub) ? rng.get_double() < 0.5 : rng.get_double() < 0.05);
-    std::vector<DT::Facet> facets;
+    std::vector<std::uint32_t> facets; // keys: 4 * cell position + index
     std::map<std::pair<Point, Point>, int> edge_facets;
     std::multiset<std::array<Point, 3>> expected;
     std::size_t at_hub = 0;
     for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
       for(int i = 0; i < 4; ++i)
         if(inside[cells.index(&*c)] && !inside[cells.index(&*c->neighbor(i))]) {
-          facets.emplace_back(c, i);
+          facets.push_back(LOC::internal::Closed_surface_mesh_3<DT>::facet_key(cells.index(&*c), i));
           std::array<Point, 3> t;
           for(int k = 0; k < 3; ++k) t[k] = c->vertex((i + 1 + k) & 3)->point();
           std::sort(t.begin(), t.end());
@@ -368,7 +368,8 @@ int main(int argc, char** argv)
     std::size_t split_edges = 0;
     for(const auto& e : edge_facets) split_edges += e.second > 2;
     const std::size_t number_of_facets = facets.size();
-    const LOC::internal::Closed_surface_mesh_3<DT> surface(std::move(facets), cells, vertex_positions, inside);
+    LOC::internal::Closed_surface_mesh_3<DT> surface(std::move(facets), cells, vertex_positions, inside);
+    surface.complete();
     Mesh union_mesh;
     surface.build(union_mesh, union_mesh.points());
     assert(CGAL::is_valid_polygon_mesh(union_mesh) && CGAL::is_closed(union_mesh) && CGAL::is_triangle_mesh(union_mesh));

@@ -105,14 +105,15 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
 }
 
 // The common part: constraints, contracted and sorted dual graph, Algorithm 8. Returns the facets of the
-// optimal cycle, each as (inside cell, index), in decreasing order; fills `inside`, indexed
-// by the cell numbering it copies to `positions` when that is not null.
+// optimal cycle in decreasing order, each as the key 4 * p + i of facet i of its inside cell at
+// position p in the numbering `cells` (`Closed_surface_mesh_3::facet_key()`); fills `cells`
+// and `inside`, indexed by it.
 template <class Triangulation, class NamedParameters>
-std::vector<typename Triangulation::Facet>
+std::vector<std::uint32_t>
 closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
                       const std::function<bool(double)>& callback, double progress_from,
                       Closed_surface_report& report, std::vector<bool>& inside,
-                      Handle_index_map<typename Triangulation::Cell>* positions = nullptr)
+                      Handle_index_map<typename Triangulation::Cell>& cells)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -129,7 +130,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   Stopwatch watch;
 
   using Graph = Sorted_dual_graph_3<Triangulation>;
-  const Handle_index_map<typename Triangulation::Cell> cells(dt.tds().cells().begin(), dt.tds().cells().end());
+  cells = Handle_index_map<typename Triangulation::Cell>(dt.tds().cells().begin(), dt.tds().cells().end());
   report.number_of_vertices = dt.number_of_vertices();
   report.number_of_triangles = Graph::number_of_finite_facets(dt);
 
@@ -196,19 +197,24 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     cut = lexicographic_closed_cut(contracted, inside, cut_progress);
   }
   contracted.release_graph();
-  std::vector<typename Triangulation::Facet> facets;
+  std::vector<std::uint32_t> facets;
   facets.reserve(cut.size());
   for(std::size_t i = 0; i < cut.size(); ++i) {
     if(i + 8 < cut.size()) prefetch_object(cells.element(Graph::owner_position(cut[i + 8])));
     const Dual_edge_record& r = cut[i];
-    const auto owner = dt.tds().cells().iterator_to(
-      *const_cast<typename Triangulation::Cell*>(cells.element(Graph::owner_position(r))));
+    const std::uint32_t p = Graph::owner_position(r);
     const int j = Graph::facet_index(r);
-    if(inside[Graph::owner_position(r)]) facets.emplace_back(owner, j);
-    else facets.emplace_back(owner->neighbor(j), owner->neighbor(j)->index(owner));
+    if(inside[p]) {
+      facets.push_back(Closed_surface_mesh_3<Triangulation>::facet_key(p, j));
+    } else {
+      const auto* owner = cells.element(p);
+      const auto neighbor = owner->neighbor(j);
+      int back = 0; // the index of the owner in its neighbor
+      while(&*neighbor->neighbor(back) != owner) ++back;
+      facets.push_back(Closed_surface_mesh_3<Triangulation>::facet_key(cells.index(&*neighbor), back));
+    }
   }
   report.number_of_facets = facets.size();
-  if(positions != nullptr) *positions = cells;
   report.cut_seconds = watch.lap();
   if(verbose)
     std::cerr << "Lex_optimal_chains: cut " << facets.size() << " facets in " << report.cut_seconds << " s\n";
@@ -278,8 +284,13 @@ lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
   Lex_optimal_chains::Closed_surface_report report;
   Lex_optimal_chains::internal::Stopwatch total;
   std::vector<bool> inside;
-  const auto result = Lex_optimal_chains::internal::closed_surface_facets(dt, np, callback, 0.0, report, inside);
-  std::copy(result.begin(), result.end(), facets);
+  Lex_optimal_chains::internal::Handle_index_map<typename DT::Cell> cells;
+  const std::vector<std::uint32_t> result =
+    Lex_optimal_chains::internal::closed_surface_facets(dt, np, callback, 0.0, report, inside, cells);
+  for(const std::uint32_t key : result) {
+    const auto cell = dt.tds().cells().iterator_to(*const_cast<typename DT::Cell*>(cells.element(key >> 2)));
+    *facets++ = typename DT::Facet(cell, int(key & 3));
+  }
   if(callback) callback(1.0);
   report.total_seconds = total.lap();
   return report;
@@ -302,19 +313,20 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
   std::vector<bool> inside;
   std::unique_ptr<Closed_surface_mesh_3<Triangulation>> surface;
   {
-    Handle_index_map<typename Triangulation::Cell> positions; // of the cells, as used by `inside`
-    std::vector<typename Triangulation::Facet> facets =
-      closed_surface_facets(dt, np, callback, 0.35, report, inside, &positions);
+    Handle_index_map<typename Triangulation::Cell> cells; // as used by `inside`
+    std::vector<std::uint32_t> facets = closed_surface_facets(dt, np, callback, 0.35, report, inside, cells);
     watch.lap();
     const Handle_index_map<typename Triangulation::Vertex> vertex_positions(dt.tds().vertices().begin(),
                                                                             dt.tds().vertices().end());
-    surface.reset(new Closed_surface_mesh_3<Triangulation>(std::move(facets), positions, vertex_positions, inside));
+    surface.reset(new Closed_surface_mesh_3<Triangulation>(std::move(facets), cells, vertex_positions, inside));
   }
-  // the triangulation (ours) is freed before the mesh is built: peak memory
   const double extraction_seconds = watch.lap();
+  // the triangulation (ours) is freed before the rest of the surface is made: peak memory
   std::vector<bool>().swap(inside);
   dt.clear();
   const double clear_seconds = watch.lap();
+  surface->complete();
+  const double completion_seconds = watch.lap();
   surface->build(mesh, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh)));
   const Closed_surface_statistics& s = surface->statistics();
   report.mesh_vertices = s.vertices;
@@ -324,10 +336,11 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
   report.non_manifold_edges = s.non_manifold_edges;
   report.genus = s.genus;
   const double build_seconds = watch.lap();
-  report.output_seconds = extraction_seconds + clear_seconds + build_seconds;
+  report.output_seconds = extraction_seconds + clear_seconds + completion_seconds + build_seconds;
   if(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false))
-    std::cerr << "Lex_optimal_chains: surface extracted in " << extraction_seconds << " s, triangulation freed in "
-              << clear_seconds << " s, mesh built in " << build_seconds << " s\n";
+    std::cerr << "Lex_optimal_chains: surface read from the triangulation in " << extraction_seconds
+              << " s, triangulation freed in " << clear_seconds << " s, vertex copies and statistics in "
+              << completion_seconds << " s, mesh built in " << build_seconds << " s\n";
   if(callback) callback(1.0);
 }
 

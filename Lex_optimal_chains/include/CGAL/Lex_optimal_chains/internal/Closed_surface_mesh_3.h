@@ -50,147 +50,154 @@ template <class Triangulation>
 class Closed_surface_mesh_3
 {
 public:
-  using Cell_handle = typename Triangulation::Cell_handle;
-  using Vertex_handle = typename Triangulation::Vertex_handle;
-  using Facet = typename Triangulation::Facet;
   using Vertex = typename Triangulation::Vertex;
-
   using Cell = typename Triangulation::Cell;
+  using Point = typename Triangulation::Point;
 
-  // `facets`: the boundary facets, each given by its inside cell (emptied here: the mesh is
-  // built while the triangulation is still there, at the peak of memory); `cells` numbers the
-  // cells and `inside[cells.index(c)]` tells if a cell is inside; `vertex_positions` numbers
-  // the vertices.
-  Closed_surface_mesh_3(std::vector<Facet>&& given_facets, const Handle_index_map<Cell>& cells,
+  // The key of facet i of the cell at position p in the cell numbering: 4 * p + i.
+  static std::uint32_t facet_key(std::uint32_t cell_position, int i) { return (cell_position << 2) | std::uint32_t(i); }
+
+  // Reads from the triangulation all that the surface needs, and keeps no reference to it: the
+  // triangulation may be freed once this constructor returns (that is when the memory peaks).
+  // `facet_keys`: the boundary facets in their canonical order, each as the `facet_key()` of
+  // its inside cell (emptied here); `cells` numbers the cells and `inside[cells.index(c)]`
+  // tells if a cell is inside; `vertex_positions` numbers the vertices.
+  Closed_surface_mesh_3(std::vector<std::uint32_t>&& facet_keys, const Handle_index_map<Cell>& cells,
                         const Handle_index_map<Vertex>& vertex_positions, const std::vector<bool>& inside)
-    : cells_(cells), vertices_(vertex_positions), inside_(inside)
   {
-    std::vector<Facet> facets;
-    facets.swap(given_facets);
-    const std::size_t nf = facets.size();
+    const std::size_t nf = facet_keys.size();
+    CGAL_precondition(nf < (std::size_t(1) << 30));
     // Internally the facets are kept in the order of their cells in memory, so that the
     // corners, edges and umbrellas are read nearby; `rank_of_` keeps the given (canonical)
     // order for the numbering of the output.
+    std::vector<std::uint32_t> keys; // in memory order
     {
       std::vector<std::uint64_t> order(nf), buffer;
-      for(std::size_t k = 0; k < nf; ++k)
-        order[k] = (std::uint64_t(facet_key(facets[k].first, facets[k].second)) << 32) | k;
+      for(std::size_t k = 0; k < nf; ++k) order[k] = (std::uint64_t(facet_keys[k]) << 32) | k;
+      std::vector<std::uint32_t>().swap(facet_keys);
       radix_sort_high_words(order, buffer);
-      facets_.resize(nf);
+      std::vector<std::uint64_t>().swap(buffer);
+      keys.resize(nf);
       rank_of_.resize(nf);
       for(std::size_t k = 0; k < nf; ++k) {
-        facets_[k] = facets[std::uint32_t(order[k])];
+        keys[k] = std::uint32_t(order[k] >> 32);
         rank_of_[k] = std::uint32_t(order[k]);
       }
-      std::vector<Facet>().swap(facets);
     }
-    // corners: the outward vertices of each facet, rotated to start at the lexicographically
-    // smallest point, so that the output does not depend on the vertex order in the cells
+    const Triangulation_reader reader{keys, cells, vertex_positions, inside};
+    // corners: the vertex numbers of the outward vertices of each facet, rotated to start at
+    // the lexicographically smallest point, so that the output does not depend on the vertex
+    // order in the cells
     corners_.resize(3 * nf);
     for(std::size_t k = 0; k < nf; ++k) {
-      const auto ov = outward_facet_vertices(facets_[k].second);
-      Vertex_handle v[3];
-      for(int i = 0; i < 3; ++i) v[i] = facets_[k].first->vertex(ov[i]);
+      const Cell* c = reader.cell(k);
+      const auto ov = outward_facet_vertices(reader.index(k));
+      const Vertex* v[3];
+      for(int i = 0; i < 3; ++i) v[i] = &*c->vertex(ov[i]);
       int first = 0;
       for(int i = 1; i < 3; ++i)
         if(CGAL::compare_xyz(v[i]->point(), v[first]->point()) == SMALLER) first = i;
-      for(int i = 0; i < 3; ++i) corners_[3 * k + i] = vertex_positions.index(&*v[(first + i) % 3]);
+      for(int i = 0; i < 3; ++i) corners_[3 * k + i] = vertex_positions.index(v[(first + i) % 3]);
     }
     // twins: an edge of the triangulation with exactly two boundary facets joins them (the
     // boundary of a union of cells is a cycle, so no other facet can be met when turning
     // around it); they are found by bucketing the half-edges by their smaller vertex
     twin_.assign(3 * nf, UINT32_MAX);
-    if(pair_twins_by_vertices() < 3 * nf) {
+    if(pair_twins_by_vertices(vertex_positions.size()) < 3 * nf) {
       // non-manifold edges (four or more boundary facets): turn around them through the
-      // inside cells. Facet lookup: (cell position, index) -> position in `facets_`, by
-      // open addressing with a monotone hash (keys are spread evenly over [0, 4 * cells),
-      // and locality is kept).
-      std::size_t slots = 16;
-      while(slots < 2 * nf) slots *= 2;
-      table_.assign(slots, Slot{empty_key, 0});
-      for(std::size_t k = 0; k < nf; ++k) {
-        const std::uint32_t key = facet_key(facets_[k].first, facets_[k].second);
-        std::size_t h = hash(key);
-        while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
-        table_[h] = Slot{key, std::uint32_t(k)};
-      }
+      // inside cells
+      const Facet_table table(keys, cells.size());
       for(std::size_t k = 0; k < nf; ++k)
         for(int e = 0; e < 3; ++e) {
           const std::uint32_t h = std::uint32_t(3 * k + e);
           if(twin_[h] != UINT32_MAX) continue;
-          const std::uint32_t t = find_twin(k, e);
+          const std::uint32_t t = find_twin(reader, table, k, e);
           CGAL_assertion(twin_[t] == UINT32_MAX);
           twin_[h] = t;
           twin_[t] = h;
         }
     }
+    // the points, by vertex number
+    vertex_points_.resize(vertex_positions.size());
+    for(std::uint32_t v = 0; v < vertex_positions.size(); ++v) vertex_points_[v] = vertex_positions.element(v)->point();
+  }
 
+  // Finishes the surface without the triangulation, which may have been freed: one vertex
+  // copy per umbrella, the statistics, and the canonical numbering that `build()` follows.
+  // Must be called once, before `statistics()` and `build()`.
+  void complete()
+  {
+    CGAL_precondition(!completed_);
+    completed_ = true;
+    const std::size_t nf = rank_of_.size();
     // one vertex copy per umbrella (the cycle of corners around a vertex linked by twins).
     // Umbrellas are walked in the memory order of the facets (their corners are then
     // nearby), and the copies are numbered afterwards in the canonical order: by the first
     // corner (3 * rank + e) of each umbrella in the given order of the facets.
     corner_vertex_.assign(3 * nf, UINT32_MAX);
-    std::vector<std::uint32_t> first_corner; // of each copy, in walk order
-    std::vector<std::uint64_t> canonical;    // (first canonical corner << 32) | walk id
-    for(std::uint32_t c = 0; c < 3 * nf; ++c) {
-      if(corner_vertex_[c] != UINT32_MAX) continue;
-      const std::uint32_t id = std::uint32_t(first_corner.size());
-      first_corner.push_back(c);
-      std::uint32_t x = c, first = UINT32_MAX;
-      do {
-        corner_vertex_[x] = id;
-        first = (std::min)(first, 3 * rank_of_[x / 3] + x % 3);
-        x = next_corner_around_vertex(x);
-      } while(x != c);
-      canonical.push_back((std::uint64_t(first) << 32) | id);
-    }
+    std::vector<std::uint32_t> copies; // vertex number of each copy, in the canonical order
     {
+      std::vector<std::uint32_t> first_corner; // of each copy, in walk order
+      std::vector<std::uint64_t> canonical;    // (first canonical corner << 32) | walk id
+      for(std::uint32_t c = 0; c < 3 * nf; ++c) {
+        if(corner_vertex_[c] != UINT32_MAX) continue;
+        const std::uint32_t id = std::uint32_t(first_corner.size());
+        first_corner.push_back(c);
+        std::uint32_t x = c, first = UINT32_MAX;
+        do {
+          corner_vertex_[x] = id;
+          first = (std::min)(first, 3 * rank_of_[x / 3] + x % 3);
+          x = next_corner_around_vertex(x);
+        } while(x != c);
+        canonical.push_back((std::uint64_t(first) << 32) | id);
+      }
       std::vector<std::uint64_t> buffer;
       radix_sort_high_words(canonical, buffer);
+      std::vector<std::uint64_t>().swap(buffer);
       std::vector<std::uint32_t> number(canonical.size());
-      copies_.resize(canonical.size());
+      copies.resize(canonical.size());
       for(std::size_t i = 0; i < canonical.size(); ++i) {
         const std::uint32_t id = std::uint32_t(canonical[i]);
         number[id] = std::uint32_t(i);
-        copies_[i] = vertex(first_corner[id]);
+        copies[i] = corners_[first_corner[id]];
       }
       for(std::uint32_t& v : corner_vertex_) v = number[v];
     }
+    std::vector<std::uint32_t>().swap(corners_);
 
     // statistics: vertices split in several copies (split edges were counted with the twins)
-    stats_.vertices = copies_.size();
+    stats_.vertices = copies.size();
     stats_.faces = nf;
     {
-      std::vector<std::uint8_t> copies_of(vertex_positions.size(), 0);
-      for(const std::uint32_t v : copies_) {
+      std::vector<std::uint8_t> copies_of(vertex_points_.size(), 0);
+      for(const std::uint32_t v : copies) {
         std::uint8_t& n = copies_of[v];
         if(n == 1) ++stats_.non_manifold_vertices;
         n = std::uint8_t((std::min)(int(n) + 1, 2));
       }
     }
+    points_.reserve(copies.size());
+    for(const std::uint32_t v : copies) points_.push_back(vertex_points_[v]);
+    std::vector<Point>().swap(vertex_points_);
+    std::vector<std::uint32_t>().swap(copies);
 
-    Union_find components(nf);
-    for(std::uint32_t h = 0; h < 3 * nf; ++h) components.unite(h / 3, twin_[h] / 3);
-    std::vector<std::int64_t> v_count(nf, 0), f_count(nf, 0);
-    for(std::uint32_t k = 0; k < nf; ++k) ++f_count[components.find(k)];
-    std::vector<std::uint8_t> seen(copies_.size(), 0);
-    for(std::uint32_t c = 0; c < 3 * nf; ++c)
-      if(!seen[corner_vertex_[c]]) { seen[corner_vertex_[c]] = 1; ++v_count[components.find(c / 3)]; }
-    for(std::uint32_t k = 0; k < nf; ++k)
-      if(components.find(k) == k) {
-        ++stats_.components;
-        const std::int64_t chi = v_count[k] - 3 * f_count[k] / 2 + f_count[k];
-        stats_.genus += long((2 - chi) / 2);
-      }
+    // components and their genus (Euler characteristic V - E + F, with E = 3F/2)
+    {
+      Union_find components(nf);
+      for(std::uint32_t h = 0; h < 3 * nf; ++h) components.unite(h / 3, twin_[h] / 3);
+      std::vector<std::uint32_t> v_count(nf, 0), f_count(nf, 0);
+      for(std::uint32_t k = 0; k < nf; ++k) ++f_count[components.find(k)];
+      std::vector<std::uint8_t> seen(points_.size(), 0);
+      for(std::uint32_t c = 0; c < 3 * nf; ++c)
+        if(!seen[corner_vertex_[c]]) { seen[corner_vertex_[c]] = 1; ++v_count[components.find(c / 3)]; }
+      for(std::uint32_t k = 0; k < nf; ++k)
+        if(components.find(k) == k) {
+          ++stats_.components;
+          const std::int64_t f = f_count[k], chi = std::int64_t(v_count[k]) - 3 * f / 2 + f;
+          stats_.genus += long((2 - chi) / 2);
+        }
+    }
 
-    // keep only what `build()` needs, without references into the triangulation, so that
-    // the caller may free the triangulation before the mesh is built
-    points_.reserve(copies_.size());
-    for(const std::uint32_t v : copies_) points_.push_back(vertices_.element(v)->point());
-    std::vector<std::uint32_t>().swap(copies_);
-    std::vector<std::uint32_t>().swap(corners_);
-    std::vector<Facet>().swap(facets_);
-    std::vector<Slot>().swap(table_);
     // half-edges and corners renumbered in the canonical order of the facets (3 * rank + e),
     // which `build()` follows
     {
@@ -208,13 +215,17 @@ public:
     }
   }
 
-  const Closed_surface_statistics& statistics() const { return stats_; }
+  const Closed_surface_statistics& statistics() const
+  {
+    CGAL_precondition(completed_);
+    return stats_;
+  }
 
-  // Adds the surface to `mesh` (a model of `MutableFaceGraph`). The triangulation is not
-  // needed any more.
+  // Adds the surface to `mesh` (a model of `MutableFaceGraph`), after `complete()`.
   template <class PolygonMesh, class VertexPointMap>
   void build(PolygonMesh& mesh, VertexPointMap vpm) const
   {
+    CGAL_precondition(completed_);
     using GT = boost::graph_traits<PolygonMesh>;
     using vertex_descriptor = typename GT::vertex_descriptor;
     using halfedge_descriptor = typename GT::halfedge_descriptor;
@@ -255,27 +266,54 @@ public:
   }
 
 private:
-  struct Slot { std::uint32_t key, position; };
-  static constexpr std::uint32_t empty_key = UINT32_MAX;
-
-  std::uint32_t facet_key(Cell_handle c, int i) const { return (cells_.index(&*c) << 2) | std::uint32_t(i); }
-  std::size_t hash(std::uint32_t key) const
+  // The triangulation as the constructor reads it: the facets (in memory order) by their keys.
+  struct Triangulation_reader
   {
-    return std::size_t(std::uint64_t(key) * table_.size() / (4 * std::uint64_t(cells_.size())));
-  }
+    const std::vector<std::uint32_t>& keys;
+    const Handle_index_map<Cell>& cells;
+    const Handle_index_map<Vertex>& vertices;
+    const std::vector<bool>& inside;
 
-  std::uint32_t position(Cell_handle c, int i) const
+    const Cell* cell(std::size_t k) const { return cells.element(keys[k] >> 2); }
+    int index(std::size_t k) const { return int(keys[k] & 3); }
+    bool is_inside(const Cell* c) const { return inside[cells.index(c)]; }
+  };
+
+  // Facet key -> position in the memory order, by open addressing with a monotone hash (keys
+  // are spread evenly over [0, 4 * cells), and locality is kept).
+  class Facet_table
   {
-    const std::uint32_t key = facet_key(c, i);
-    std::size_t h = hash(key);
-    while(table_[h].key != key) {
-      CGAL_assertion(table_[h].key != empty_key);
-      h = (h + 1) & (table_.size() - 1);
+  public:
+    Facet_table(const std::vector<std::uint32_t>& keys, std::size_t number_of_cells)
+      : key_range_(4 * std::uint64_t(number_of_cells))
+    {
+      std::size_t slots = 16;
+      while(slots < 2 * keys.size()) slots *= 2;
+      table_.assign(slots, Slot{empty_key, 0});
+      for(std::size_t k = 0; k < keys.size(); ++k) {
+        std::size_t h = hash(keys[k]);
+        while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
+        table_[h] = Slot{keys[k], std::uint32_t(k)};
+      }
     }
-    return table_[h].position;
-  }
 
-  bool is_inside(Cell_handle c) const { return inside_[cells_.index(&*c)]; }
+    std::uint32_t position(std::uint32_t key) const
+    {
+      std::size_t h = hash(key);
+      while(table_[h].key != key) {
+        CGAL_assertion(table_[h].key != empty_key);
+        h = (h + 1) & (table_.size() - 1);
+      }
+      return table_[h].position;
+    }
+
+  private:
+    struct Slot { std::uint32_t key, position; };
+    static constexpr std::uint32_t empty_key = UINT32_MAX;
+    std::size_t hash(std::uint32_t key) const { return std::size_t(std::uint64_t(key) * table_.size() / key_range_); }
+    std::uint64_t key_range_;
+    std::vector<Slot> table_;
+  };
 
   // The corner after `c` around its vertex: the twin of the half-edge that enters the vertex
   // in the facet of `c` starts at that vertex in the next facet.
@@ -283,12 +321,12 @@ private:
 
   // Sets the twins of the half-edges whose edge bounds exactly two facets and counts the
   // edges of more facets; returns how many half-edges got their twin.
-  std::size_t pair_twins_by_vertices()
+  std::size_t pair_twins_by_vertices(std::size_t number_of_vertices)
   {
     const std::uint32_t nh = std::uint32_t(corners_.size());
     const std::vector<std::uint32_t>& id = corners_; // vertex number of each corner
     std::size_t paired = 0;
-    for_each_edge_group(vertices_.size(), nh, [&](std::uint32_t c) { return id[c]; },
+    for_each_edge_group(number_of_vertices, nh, [&](std::uint32_t c) { return id[c]; },
                         [&](const std::uint32_t* first, const std::uint32_t* last) {
                           if(last - first != 2) { // a non-manifold edge (four or more): split
                             ++stats_.non_manifold_edges;
@@ -303,49 +341,44 @@ private:
     return paired;
   }
 
-  // number of the DT vertex at corner c = 3k + i (i-th outward vertex of facet k)
-  std::uint32_t vertex(std::uint32_t c) const { return corners_[c]; }
-
   // Half-edge 3k+e goes from outward vertex e to outward vertex e+1 of facet k. Its twin is
   // the boundary half-edge met first when turning around that edge through inside cells.
-  std::uint32_t find_twin(std::size_t k, int e) const
+  std::uint32_t find_twin(const Triangulation_reader& reader, const Facet_table& table, std::size_t k, int e) const
   {
-    const Vertex* u = vertices_.element(vertex(std::uint32_t(3 * k + e)));
-    const Vertex* v = vertices_.element(vertex(std::uint32_t(3 * k + (e + 1) % 3)));
-    Cell_handle cur = facets_[k].first;
-    const Vertex* behind = &*cur->vertex(facets_[k].second); // we "arrive" through the facet opposite it
+    const std::uint32_t u = corners_[3 * k + e], v = corners_[3 * k + (e + 1) % 3];
+    const Vertex* const u_vertex = reader.vertices.element(u);
+    const Vertex* const v_vertex = reader.vertices.element(v);
+    const Cell* cur = reader.cell(k);
+    const Vertex* behind = &*cur->vertex(reader.index(k)); // we "arrive" through the facet opposite it
     for(std::size_t guard = 0;; ++guard) {
       CGAL_assertion(guard < 100000);
       int q = -1;
       for(int i = 0; i < 4; ++i) {
         const Vertex* w = &*cur->vertex(i);
-        if(w != u && w != v && w != behind) { q = i; break; }
+        if(w != u_vertex && w != v_vertex && w != behind) { q = i; break; }
       }
       CGAL_assertion(q >= 0);
-      const Cell_handle next = cur->neighbor(q);
-      if(!is_inside(next)) {
-        const std::uint32_t k2 = position(cur, q);
-        for(int e2 = 0; e2 < 3; ++e2)
-          if(vertices_.element(vertex(3 * k2 + e2)) == v && vertices_.element(vertex(3 * k2 + (e2 + 1) % 3)) == u)
-            return 3 * k2 + e2;
+      const Cell* next = &*cur->neighbor(q);
+      if(!reader.is_inside(next)) {
+        const std::uint32_t k2 = table.position(facet_key(reader.cells.index(cur), q));
+        for(std::uint32_t e2 = 0; e2 < 3; ++e2)
+          if(corners_[3 * k2 + e2] == v && corners_[3 * k2 + (e2 + 1) % 3] == u) return 3 * k2 + e2;
         CGAL_error_msg("inconsistent orientation around an edge");
       }
-      behind = &*next->vertex(next->index(cur)); // the vertex of `next` facing away from `cur`
+      int back = 0; // the index of `cur` in `next`: the vertex of `next` facing away from `cur`
+      while(&*next->neighbor(back) != cur) ++back;
+      behind = &*next->vertex(back);
       cur = next;
     }
   }
 
-  std::vector<Facet> facets_;       // in the order of their cells in memory
-  std::vector<std::uint32_t> rank_of_; // index in `facets_` -> canonical rank
-  const Handle_index_map<Cell>& cells_;
-  const Handle_index_map<Vertex>& vertices_;
-  const std::vector<bool>& inside_;
-  std::vector<Slot> table_;
-  std::vector<std::uint32_t> twin_;
-  std::vector<std::uint32_t> corners_;       // vertex numbers, 3 per facet
-  std::vector<std::uint32_t> corner_vertex_;
-  std::vector<std::uint32_t> copies_;        // vertex number of each copy
-  std::vector<typename Triangulation::Point> points_; // of the copies, for build()
+  bool completed_ = false;
+  std::vector<std::uint32_t> rank_of_;       // memory order -> canonical rank (until `complete()`)
+  std::vector<std::uint32_t> corners_;       // vertex numbers, 3 per facet (until `complete()`)
+  std::vector<Point> vertex_points_;         // by vertex number (until `complete()`)
+  std::vector<std::uint32_t> twin_;          // of each half-edge
+  std::vector<std::uint32_t> corner_vertex_; // mesh vertex of each corner (after `complete()`)
+  std::vector<Point> points_;                // of the mesh vertices (after `complete()`)
   Closed_surface_statistics stats_;
 };
 
