@@ -85,23 +85,15 @@ oriented_facet(const Triangulation& dt, typename Triangulation::Vertex_handle a,
   return {typename Triangulation::Facet(cell, f), outward};
 }
 
-// Sorts the triangles, runs Algorithm 10 from the chain `gamma0` given on records, and writes
-// the optimal chain to `out` as (facet, coefficient) with a positive coefficient.
-template <class Arithmetic, class Triangulation, class Graph, class OutputIterator>
-void optimal_chain_on_graph(const Triangulation& dt, const Graph& graph,
-                            const Record_values<typename Arithmetic::Value>& gamma0,
-                            const Record_values<std::uint8_t>& relative,
-                            const std::function<bool(double)>& callback, double progress_from,
-                            OutputIterator out, Open_surface_report& report)
+// Writes the chain given on the records of `graph` to `out` as (facet, coefficient) with a
+// positive coefficient.
+template <class Arithmetic, class Triangulation, class OutputIterator>
+void write_chain(const Sorted_dual_graph_3<Triangulation>& graph,
+                 const std::vector<std::pair<std::size_t, typename Arithmetic::Value>>& chain, OutputIterator out,
+                 Open_surface_report& report)
 {
-  std::vector<std::uint32_t> infinite;
-  {
-    std::vector<typename Triangulation::Cell_handle> hull;
-    dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
-    for(const auto& c : hull) infinite.push_back(graph.position(c));
-  }
-  const auto chain = lexicographic_homologous_chain<Arithmetic>(
-    graph, infinite, gamma0, relative, Stage_progress{&callback, progress_from, 1.0});
+  using Graph = Sorted_dual_graph_3<Triangulation>;
+  using Facet = typename Triangulation::Facet;
   report.number_of_facets = chain.size();
   for(std::size_t i = 0; i < chain.size(); ++i) {
     if(i + 8 < chain.size()) graph.prefetch_owner(graph.records()[chain[i + 8].first]);
@@ -111,8 +103,8 @@ void optimal_chain_on_graph(const Triangulation& dt, const Graph& graph,
     const int j = Graph::facet_index(r);
     const std::int64_t k = Arithmetic::to_integer(entry.second);
     if(k != 1 && k != -1) ++report.number_of_multiple_facets;
-    if(k > 0) *out++ = std::make_pair(typename Triangulation::Facet(owner, j), k);
-    else *out++ = std::make_pair(typename Triangulation::Facet(owner->neighbor(j), owner->neighbor(j)->index(owner)), -k);
+    if(k > 0) *out++ = std::make_pair(Facet(owner, j), k);
+    else *out++ = std::make_pair(Facet(owner->neighbor(j), owner->neighbor(j)->index(owner)), -k);
   }
 }
 
@@ -126,7 +118,8 @@ void check_dimension(const Triangulation& dt)
 }
 
 // The part common to both public functions once Gamma0 is known as oriented triangles or
-// facets: sort, map Gamma0 and B to records, run Algorithm 10.
+// facets: map Gamma0 and B to records, contract and sort (internal/Homologous_chain_3.h), run
+// Algorithm 10.
 template <class Arithmetic, class Triangulation, class NamedParameters, class AddGamma0, class OutputIterator>
 void optimal_chain(const Triangulation& dt, const NamedParameters& np, const AddGamma0& add_gamma0,
                    const std::function<bool(double)>& callback, double progress_from, OutputIterator out,
@@ -140,34 +133,51 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const double span = 1.0 - progress_from;
   Stopwatch watch;
-  Graph graph(dt, Stage_progress{&callback, progress_from, progress_from + 0.7 * span});
+  const Handle_index_map<typename Triangulation::Cell> cells(dt.tds().cells().begin(), dt.tds().cells().end());
+  if(cells.size() >= (std::size_t(1) << 30))
+    throw Input_error(Input_error_code::TOO_LARGE, "the triangulation has 2^30 cells or more: split the points into tiles");
   report.number_of_vertices = dt.number_of_vertices();
-  report.number_of_triangles = graph.records().size();
-  report.number_of_exactly_ordered_triangles = graph.number_of_exactly_sorted_records();
-  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
-  report.order_seconds = watch.lap();
-  if(verbose)
-    std::cerr << "Lex_optimal_chains: ordered " << graph.records().size() << " triangles in " << report.order_seconds << " s\n";
-
-  Record_values<Value> gamma0(graph.number_of_cells());
+  report.number_of_triangles = Graph::number_of_finite_facets(dt);
+  Record_values<Value> gamma0(cells.size());
   add_gamma0([&](const Facet& f, std::int64_t k) {
     if(dt.is_infinite(f))
       throw Input_error(Input_error_code::INVALID_CHAIN, "a facet of the chain has the infinite vertex");
-    const auto code = graph.record_code(f.first, f.second);
+    const auto code = Graph::record_code(dt, cells, f.first, f.second);
     const Value v = Arithmetic::from_integer(k);
     gamma0.template add<Arithmetic>(code.first, code.second ? Arithmetic::negate(v) : v);
   });
-  Record_values<std::uint8_t> relative(graph.number_of_cells());
+  Record_values<std::uint8_t> relative(cells.size());
   const std::vector<Facet> no_facets;
   // a copy: CGAL 5.5 returns the parameter by value, a reference to it would dangle
   const auto relative_range = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::relative_facets), no_facets);
   for(const Facet& f : relative_range) {
     if(dt.is_infinite(f))
       throw Input_error(Input_error_code::INVALID_CHAIN, "a facet of the subcomplex B has the infinite vertex");
-    relative.template add<Z2_arithmetic>(graph.record_code(f.first, f.second).first, 1);
+    relative.template add<Z2_arithmetic>(Graph::record_code(dt, cells, f.first, f.second).first, 1);
   }
   report.number_of_relative_triangles = relative.values().size();
-  optimal_chain_on_graph<Arithmetic>(dt, graph, gamma0, relative, callback, progress_from + 0.7 * span, out, report);
+  std::vector<std::uint32_t> infinite;
+  {
+    std::vector<typename Triangulation::Cell_handle> hull;
+    dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
+    for(const auto& c : hull) infinite.push_back(cells.index(&*c));
+  }
+
+  Contracted_homologous_graph_3<Arithmetic, Triangulation> contracted(
+    dt, cells, infinite, gamma0, relative, Stage_progress{&callback, progress_from, progress_from + 0.7 * span});
+  const Graph& graph = contracted.graph();
+  report.number_of_exactly_ordered_triangles = contracted.number_of_exact_comparisons() + graph.number_of_exactly_sorted_records();
+  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
+  report.order_seconds = watch.lap();
+  if(verbose)
+    std::cerr << "Lex_optimal_chains: contracted the cells across their largest facets ("
+              << contracted.number_of_exact_comparisons() << " comparisons made exactly), then ordered the "
+              << graph.records().size() << " of " << report.number_of_triangles
+              << " triangles between components or with a non-zero intersection product in " << report.order_seconds
+              << " s\n";
+  const auto chain = lexicographic_homologous_chain<Arithmetic>(
+    graph, contracted.sets(), gamma0, relative, Stage_progress{&callback, progress_from + 0.7 * span, 1.0});
+  write_chain<Arithmetic>(graph, chain, out, report);
   report.optimal_chain_seconds = watch.lap();
   if(verbose)
     std::cerr << "Lex_optimal_chains: optimal chain of " << report.number_of_facets << " triangles in "

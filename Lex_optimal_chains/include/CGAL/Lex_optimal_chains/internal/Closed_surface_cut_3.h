@@ -88,7 +88,7 @@ public:
     sink_root_ = sets_.find(sink_root_);
     if(source_root_ != none) source_root_ = sets_.find(source_root_);
     graph_.reset(new Graph(dt, cells, half(0.5),
-                           [this](std::uint32_t a, std::uint32_t b) { return sets_.find(a) != sets_.find(b); }));
+                           [this](std::uint32_t a, int, std::uint32_t b) { return sets_.find(a) != sets_.find(b); }));
   }
 
   const Triangulation& triangulation() const { return dt_; }
@@ -109,13 +109,7 @@ public:
   // finite cell, or the one of lower address if both are finite.
   std::pair<std::uint32_t, int> largest_facet(std::uint32_t c) const
   {
-    const Cell* x = cells_.element(c);
-    const Cell* y = cells_.element(across_[c]);
-    if(!y->has_vertex(dt_.infinite_vertex()) && std::less<const Cell*>()(y, x)) std::swap(x, y), c = across_[c];
-    for(int j = 0; j < 4; ++j)
-      if(&*x->neighbor(j) == y) return std::make_pair(c, j);
-    CGAL_error();
-    return std::make_pair(c, 0);
+    return Graph::facet_between(dt_, cells_, c, across_[c]);
   }
 
   Triangle_coordinates_3 coordinates(std::pair<std::uint32_t, int> facet) const
@@ -423,7 +417,7 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
   if(smallest.contraction) {
     contracted.release_graph();
     resorted.reset(new Graph(contracted.triangulation(), contracted.cells(), [](double) { return true; },
-                             [&inside](std::uint32_t a, std::uint32_t b) { return inside[a] != inside[b]; }));
+                             [&inside](std::uint32_t a, int, std::uint32_t b) { return inside[a] != inside[b]; }));
   }
   const auto& records = resorted ? resorted->records() : contracted.graph().records();
   auto is_cut = [&inside](const Dual_edge_record& r) {

@@ -21,9 +21,12 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Augmented_union_find.h>
+#include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Largest_facets_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
 
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -71,25 +74,44 @@ private:
   std::unordered_map<std::uint32_t, Value> values_;
 };
 
-// Algorithm 10. `gamma0` holds Gamma0 on records (in their orientation); the records in
-// `relative` (the triangles of B) are not edges of the dual graph. Returns the optimal chain
-// as (record index, coefficient) in decreasing order.
+// The disjoint sets of Algorithm 10 for the cells [0, n), the infinite cells already in one
+// set with zero values (they all stand for the infinite vertex).
+template <class Arithmetic>
+Augmented_union_find<Arithmetic> sets_with_infinite_node(std::size_t n, const std::vector<std::uint32_t>& infinite_cells)
+{
+  Augmented_union_find<Arithmetic> sets(n);
+  if(!infinite_cells.empty()) {
+    std::uint32_t root = sets.find(infinite_cells.front()).first;
+    for(std::uint32_t c : infinite_cells) {
+      const std::uint32_t r = sets.find(c).first;
+      if(r != root) root = sets.link_roots(r, root, Arithmetic::zero());
+    }
+  }
+  return sets;
+}
+
+// The intersection product alpha = Gamma0(e) + g2 - g1 of the dual edge e from the cell of
+// value g1 to the cell of value g2 (values relative to their common root).
+template <class Arithmetic>
+typename Arithmetic::Value intersection_product(typename Arithmetic::Value gamma0, typename Arithmetic::Value g1,
+                                                typename Arithmetic::Value g2)
+{
+  return Arithmetic::add(Arithmetic::add(gamma0, g2), Arithmetic::negate(g1));
+}
+
+// Algorithm 10 on the sorted records of `graph`, from the disjoint sets `sets` (the cells
+// alone, or already linked along edges of the maximum spanning forest: see
+// `Contracted_homologous_graph_3`). `gamma0` holds Gamma0 on records (in their orientation);
+// the records in `relative` (the triangles of B) are not edges of the dual graph. Returns the
+// optimal chain as (record index, coefficient) in decreasing order.
 template <class Arithmetic, class Graph, class Progress>
 std::vector<std::pair<std::size_t, typename Arithmetic::Value>>
-lexicographic_homologous_chain(const Graph& graph, const std::vector<std::uint32_t>& infinite_cells,
+lexicographic_homologous_chain(const Graph& graph, Augmented_union_find<Arithmetic>& sets,
                                const Record_values<typename Arithmetic::Value>& gamma0,
                                const Record_values<std::uint8_t>& relative, const Progress& progress)
 {
   using Value = typename Arithmetic::Value;
   const Value zero = Arithmetic::zero();
-  Augmented_union_find<Arithmetic> sets(graph.number_of_cells());
-  if(!infinite_cells.empty()) {
-    std::uint32_t root = sets.find(infinite_cells.front()).first;
-    for(std::uint32_t c : infinite_cells) {
-      const std::uint32_t r = sets.find(c).first;
-      if(r != root) root = sets.link_roots(r, root, zero);
-    }
-  }
   const bool is_relative = !relative.values().empty();
   std::vector<std::pair<std::size_t, Value>> result;
   const auto& records = graph.records();
@@ -108,8 +130,7 @@ lexicographic_homologous_chain(const Graph& graph, const std::vector<std::uint32
     if(is_relative && relative.contains(r.owner)) continue; // a triangle of B: no dual edge
     const auto [r1, g1] = sets.find(Graph::owner_position(r));
     const auto [r2, g2] = sets.find(Graph::other_position(r));
-    // alpha = Gamma0(e) + g2 - g1
-    const Value alpha = Arithmetic::add(Arithmetic::add(gamma0.get(r.owner, zero), g2), Arithmetic::negate(g1));
+    const Value alpha = intersection_product<Arithmetic>(gamma0.get(r.owner, zero), g1, g2);
     if(r1 == r2) {
       if(alpha != zero) result.emplace_back(index, alpha);
     } else {
@@ -118,6 +139,83 @@ lexicographic_homologous_chain(const Graph& graph, const std::vector<std::uint32
   }
   return result;
 }
+
+// The dual graph of Algorithm 10 after the contraction of internal/Largest_facets_3.h.
+//
+// In the decreasing order, the first dual edge of a finite cell is its largest facet that is
+// not in B, and the cell is alone when it is met: Algorithm 10 always links it there. Every
+// cell without a triangle of B is therefore linked in advance to the cell across its largest
+// facet, with the same intersection product formula. The values of the links depend on the
+// order in which the links are made, but the values of the paths between two cells of a set
+// do not: they are sums along the maximum spanning forest, which the contraction does not
+// change (internal/Largest_facets_3.h). So Gamma0(e) + g2 - g1 is the same for every later
+// edge, and only two kinds of facets need to be sorted and processed: the facets between
+// different sets (Algorithm 10 may link them), and the facets within a set whose
+// intersection product is not zero (they are in the result, in their place in the order).
+// The links of the contraction themselves have a zero product.
+template <class Arithmetic, class Triangulation>
+class Contracted_homologous_graph_3
+{
+public:
+  using Cell = typename Triangulation::Cell;
+  using Graph = Sorted_dual_graph_3<Triangulation>;
+  using Value = typename Arithmetic::Value;
+
+  template <class Progress>
+  Contracted_homologous_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells,
+                                const std::vector<std::uint32_t>& infinite_cells, const Record_values<Value>& gamma0,
+                                const Record_values<std::uint8_t>& relative, const Progress& progress)
+    : sets_(sets_with_infinite_node<Arithmetic>(cells.size(), infinite_cells))
+  {
+    const Value zero = Arithmetic::zero();
+    const std::size_t n = cells.size();
+    auto half = [&](double from) { return [&progress, from](double x) { return progress(from + 0.5 * x); }; };
+    {
+      std::vector<bool> terminal(n, false); // the cells with a triangle of B are not contracted
+      for(const auto& entry : relative.values()) {
+        const std::uint32_t owner = entry.first >> 2;
+        terminal[owner] = true;
+        terminal[cells.index(&*cells.element(owner)->neighbor(int(entry.first & 3)))] = true;
+      }
+      std::vector<std::uint32_t> across;
+      exact_comparisons_ = cells_across_largest_facets(dt, cells, terminal, across, half(0.0));
+      for(std::uint32_t c = 0; c < n; ++c) {
+        const std::uint32_t d = across[c];
+        if(d == c || (across[d] == c && d < c)) continue; // a pair across the same facet: linked once
+        const std::pair<std::uint32_t, int> facet = Graph::facet_between(dt, cells, c, d);
+        const std::uint32_t owner = facet.first, other = owner == c ? d : c;
+        const auto [r1, g1] = sets_.find(owner);
+        const auto [r2, g2] = sets_.find(other);
+        CGAL_assertion(r1 != r2); // the contractions are edges of a forest
+        const std::uint32_t code = (owner << 2) | std::uint32_t(facet.second);
+        sets_.link_roots(r1, r2, intersection_product<Arithmetic>(gamma0.get(code, zero), g1, g2));
+      }
+    }
+    // every cell pointed at its root, in one sequential pass: the filter below then reads one
+    // node per cell
+    for(std::uint32_t c = 0; c < n; ++c) sets_.find(c);
+    const bool is_relative = !relative.values().empty();
+    graph_.reset(new Graph(dt, cells, half(0.5), [&](std::uint32_t owner, int j, std::uint32_t other) {
+      const std::uint32_t code = (owner << 2) | std::uint32_t(j);
+      if(is_relative && relative.contains(code)) return false; // not an edge
+      const auto [r1, g1] = sets_.find(owner);
+      const auto [r2, g2] = sets_.find(other);
+      return r1 != r2 || intersection_product<Arithmetic>(gamma0.get(code, zero), g1, g2) != zero;
+    }));
+  }
+
+  // the sorted facets that Algorithm 10 must process
+  const Graph& graph() const { return *graph_; }
+  // the disjoint sets after the contraction, for `lexicographic_homologous_chain()`
+  Augmented_union_find<Arithmetic>& sets() { return sets_; }
+  // comparisons of the contraction that the double evaluations could not decide
+  std::size_t number_of_exact_comparisons() const { return exact_comparisons_; }
+
+private:
+  Augmented_union_find<Arithmetic> sets_;
+  std::unique_ptr<Graph> graph_;
+  std::size_t exact_comparisons_ = 0;
+};
 
 } // namespace internal
 } // namespace Lex_optimal_chains

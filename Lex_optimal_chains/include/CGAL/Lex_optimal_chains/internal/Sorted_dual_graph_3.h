@@ -142,11 +142,12 @@ public:
   template <class Progress>
   Sorted_dual_graph_3(const Triangulation& dt, const Progress& progress)
     : Sorted_dual_graph_3(dt, Handle_index_map<Cell>(dt.tds().cells().begin(), dt.tds().cells().end()), progress,
-                          [](std::uint32_t, std::uint32_t) { return true; })
+                          [](std::uint32_t, int, std::uint32_t) { return true; })
   {}
 
-  // The finite facets between the cells at positions `a` and `b` (in the numbering `cells`
-  // of the cell container, in iteration order) for which `keep(a, b)` is true.
+  // The finite facets for which `keep(owner, j, other)` is true: the facet j of the cell at
+  // position `owner` (in the numbering `cells` of the cell container, in iteration order),
+  // whose record it is, shared with the cell at position `other`.
   template <class Progress, class Keep>
   Sorted_dual_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells, const Progress& progress,
                       Keep&& keep)
@@ -193,15 +194,32 @@ public:
   // and whether the record's orientation (outward of its owner) is opposite to the facet's
   // (outward of c). The owner is the finite cell of the facet, or the one of lower address
   // if both are finite (as in build_records()).
-  std::pair<std::uint32_t, bool> record_code(Cell_handle c, int i) const
+  std::pair<std::uint32_t, bool> record_code(Cell_handle c, int i) const { return record_code(dt_, cells_, c, i); }
+
+  static std::pair<std::uint32_t, bool> record_code(const Triangulation& dt, const Handle_index_map<Cell>& cells,
+                                                    Cell_handle c, int i)
   {
     const Cell_handle n = c->neighbor(i);
     bool c_owns;
-    if(dt_.is_infinite(c)) c_owns = false;
-    else if(dt_.is_infinite(n)) c_owns = true;
+    if(dt.is_infinite(c)) c_owns = false;
+    else if(dt.is_infinite(n)) c_owns = true;
     else c_owns = !std::less<const Cell*>()(&*n, &*c);
-    if(c_owns) return {(position(c) << 2) | std::uint32_t(i), false};
-    return {(position(n) << 2) | std::uint32_t(n->index(c)), true};
+    if(c_owns) return {(cells.index(&*c) << 2) | std::uint32_t(i), false};
+    return {(cells.index(&*n) << 2) | std::uint32_t(n->index(c)), true};
+  }
+
+  // The facet between the adjacent cells at positions `a` (finite) and `b`, as the position
+  // of the owner of its record and its index there (the owner is chosen as in the records).
+  static std::pair<std::uint32_t, int> facet_between(const Triangulation& dt, const Handle_index_map<Cell>& cells,
+                                                     std::uint32_t a, std::uint32_t b)
+  {
+    const Cell* x = cells.element(a);
+    const Cell* y = cells.element(b);
+    if(!y->has_vertex(dt.infinite_vertex()) && std::less<const Cell*>()(y, x)) std::swap(x, y), a = b;
+    for(int j = 0; j < 4; ++j)
+      if(&*x->neighbor(j) == y) return std::make_pair(a, j);
+    CGAL_error_msg("the cells are not adjacent");
+    return std::make_pair(a, 0);
   }
 
   Triangle_coordinates_3 coordinates(const Record& r) const
@@ -247,14 +265,16 @@ private:
         const Cell_handle n = c.neighbor(infinite_index);
         if(std::less<const Cell*>()(&*n, &c)) continue;
         const std::uint32_t n_pos = cells_.index(&*n);
-        if(keep(n_pos, pos)) add_record(*n, n_pos, n->index(cell(pos)), pos);
+        int j = 0; // the index of c in n
+        while(&*n->neighbor(j) != &c) ++j;
+        if(keep(n_pos, j, pos)) add_record(*n, n_pos, j, pos);
         continue;
       }
       for(int j = 0; j < 4; ++j) {
         const Cell* n = &*c.neighbor(j);
         if(std::less<const Cell*>()(n, &c)) continue;
         const std::uint32_t n_pos = cells_.index(n);
-        if(keep(pos, n_pos)) add_record(c, pos, j, n_pos);
+        if(keep(pos, j, n_pos)) add_record(c, pos, j, n_pos);
       }
     }
   }
