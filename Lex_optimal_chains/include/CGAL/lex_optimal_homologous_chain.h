@@ -177,6 +177,7 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
               << " s\n";
   const auto chain = lexicographic_homologous_chain<Arithmetic>(
     graph, contracted.sets(), gamma0, relative, Stage_progress{&callback, progress_from + 0.7 * span, 1.0});
+  contracted.release_sets(); // before the output grows: peak memory
   write_chain<Arithmetic>(graph, chain, out, report);
   report.optimal_chain_seconds = watch.lap();
   if(verbose)

@@ -91,9 +91,10 @@ public:
       const Index p = n.parent();
       if(p == x) return {x, g};
       const Node& np = nodes_[p];
+      const Index gp = np.parent();
+      if(gp == p) return {p, Arithmetic::add(g, n.value())}; // nothing to shorten: no write
       // x now skips p: its link value becomes the value of the path x -> p -> parent(p)
       const Value v = Arithmetic::add(n.value(), np.value());
-      const Index gp = np.parent();
       n.set(gp, v);
       g = Arithmetic::add(g, v);
       x = gp;
@@ -112,6 +113,40 @@ public:
     nodes_[r1].set(r2, delta);
     if(rank_[r1] == rank_[r2]) ++rank_[r2];
     return r2;
+  }
+
+  // Builds the sets of a forest given by parent pointers: `parent(x)` is the parent of x
+  // (x itself for a root) and `value(x)` the value of the path from x to its parent. All
+  // elements must be alone before. A root with children gets rank 1: the ranks are only a
+  // balance, every value stays right.
+  template <class Parent, class LinkValue>
+  void set_forest(const Parent& parent, const LinkValue& value)
+  {
+    for(Index x = 0; x < nodes_.size(); ++x) {
+      CGAL_precondition(nodes_[x].parent() == x);
+      const Index p = parent(x);
+      if(p == x) continue;
+      nodes_[x].set(p, value(x));
+      if(rank_[p] == 0) rank_[p] = 1;
+    }
+  }
+
+  // `find(x)` when every element points directly at its root (after `flatten()`, before any
+  // link): reads one node.
+  std::pair<Index, Value> find_in_flat(Index x) const
+  {
+    const Node& n = nodes_[x];
+    CGAL_precondition(nodes_[n.parent()].parent() == n.parent());
+    return n.parent() == x ? std::make_pair(x, Arithmetic::zero()) : std::make_pair(n.parent(), Value(n.value()));
+  }
+
+  // Points every element directly at its root: a later `find` reads two nodes.
+  void flatten()
+  {
+    for(Index x = 0; x < nodes_.size(); ++x) {
+      const std::pair<Index, Value> r = find(x);
+      if(r.first != x) nodes_[x].set(r.first, r.second);
+    }
   }
 
   void prefetch(Index x) const

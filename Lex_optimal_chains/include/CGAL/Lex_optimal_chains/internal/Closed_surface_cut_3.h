@@ -82,13 +82,12 @@ public:
       source_root_ = source_root_ == none ? sets_.find(s) : sets_.unite(source_root_, s);
     for(std::uint32_t c = 0; c < across_.size(); ++c)
       if(across_[c] != c) sets_.unite(c, across_[c]);
-    // every cell pointed at its root, in one sequential pass: the filter below then reads
-    // one parent per cell
-    for(std::uint32_t c = 0; c < across_.size(); ++c) sets_.find(c);
+    sets_.flatten(); // the filter below then reads one parent per cell
     sink_root_ = sets_.find(sink_root_);
     if(source_root_ != none) source_root_ = sets_.find(source_root_);
-    graph_.reset(new Graph(dt, cells, half(0.5),
-                           [this](std::uint32_t a, int, std::uint32_t b) { return sets_.find(a) != sets_.find(b); }));
+    graph_.reset(new Graph(dt, cells, half(0.5), [this](std::uint32_t a, int, std::uint32_t b) {
+      return sets_.find_in_flat(a) != sets_.find_in_flat(b);
+    }));
   }
 
   const Triangulation& triangulation() const { return dt_; }

@@ -74,19 +74,26 @@ private:
   std::unordered_map<std::uint32_t, Value> values_;
 };
 
+// Puts the infinite cells in one set with zero values (they all stand for the infinite
+// vertex); they must be roots.
+template <class Arithmetic>
+void unite_infinite_cells(Augmented_union_find<Arithmetic>& sets, const std::vector<std::uint32_t>& infinite_cells)
+{
+  if(infinite_cells.empty()) return;
+  std::uint32_t root = sets.find(infinite_cells.front()).first;
+  for(std::uint32_t c : infinite_cells) {
+    const std::uint32_t r = sets.find(c).first;
+    if(r != root) root = sets.link_roots(r, root, Arithmetic::zero());
+  }
+}
+
 // The disjoint sets of Algorithm 10 for the cells [0, n), the infinite cells already in one
-// set with zero values (they all stand for the infinite vertex).
+// set.
 template <class Arithmetic>
 Augmented_union_find<Arithmetic> sets_with_infinite_node(std::size_t n, const std::vector<std::uint32_t>& infinite_cells)
 {
   Augmented_union_find<Arithmetic> sets(n);
-  if(!infinite_cells.empty()) {
-    std::uint32_t root = sets.find(infinite_cells.front()).first;
-    for(std::uint32_t c : infinite_cells) {
-      const std::uint32_t r = sets.find(c).first;
-      if(r != root) root = sets.link_roots(r, root, Arithmetic::zero());
-    }
-  }
+  unite_infinite_cells(sets, infinite_cells);
   return sets;
 }
 
@@ -165,7 +172,7 @@ public:
   Contracted_homologous_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells,
                                 const std::vector<std::uint32_t>& infinite_cells, const Record_values<Value>& gamma0,
                                 const Record_values<std::uint8_t>& relative, const Progress& progress)
-    : sets_(sets_with_infinite_node<Arithmetic>(cells.size(), infinite_cells))
+    : sets_(cells.size())
   {
     const Value zero = Arithmetic::zero();
     const std::size_t n = cells.size();
@@ -179,27 +186,31 @@ public:
       }
       std::vector<std::uint32_t> across;
       exact_comparisons_ = cells_across_largest_facets(dt, cells, terminal, across, half(0.0));
-      for(std::uint32_t c = 0; c < n; ++c) {
+      // The contractions are the edges of a forest (the only cycles of `across` are the pairs
+      // of cells across the same facet, whose cell of higher position is taken as the root):
+      // each cell gets the cell across its largest facet as parent, with the value that
+      // Algorithm 10 gives to the link of two single cells: Gamma0 of the record from the
+      // owner to the other cell, negated from the other cell to the owner.
+      auto parent = [&across](std::uint32_t c) {
         const std::uint32_t d = across[c];
-        if(d == c || (across[d] == c && d < c)) continue; // a pair across the same facet: linked once
+        return across[d] == c && d < c ? c : d;
+      };
+      sets_.set_forest(parent, [&](std::uint32_t c) {
+        const std::uint32_t d = across[c];
+        if(!gamma0.may_contain(c) && !gamma0.may_contain(d)) return zero; // Gamma0 has no facet of c
         const std::pair<std::uint32_t, int> facet = Graph::facet_between(dt, cells, c, d);
-        const std::uint32_t owner = facet.first, other = owner == c ? d : c;
-        const auto [r1, g1] = sets_.find(owner);
-        const auto [r2, g2] = sets_.find(other);
-        CGAL_assertion(r1 != r2); // the contractions are edges of a forest
-        const std::uint32_t code = (owner << 2) | std::uint32_t(facet.second);
-        sets_.link_roots(r1, r2, intersection_product<Arithmetic>(gamma0.get(code, zero), g1, g2));
-      }
+        const Value v = gamma0.get((facet.first << 2) | std::uint32_t(facet.second), zero);
+        return facet.first == c ? v : Arithmetic::negate(v);
+      });
     }
-    // every cell pointed at its root, in one sequential pass: the filter below then reads one
-    // node per cell
-    for(std::uint32_t c = 0; c < n; ++c) sets_.find(c);
+    unite_infinite_cells(sets_, infinite_cells);
+    sets_.flatten(); // the filter below then reads one node per cell
     const bool is_relative = !relative.values().empty();
     graph_.reset(new Graph(dt, cells, half(0.5), [&](std::uint32_t owner, int j, std::uint32_t other) {
       const std::uint32_t code = (owner << 2) | std::uint32_t(j);
       if(is_relative && relative.contains(code)) return false; // not an edge
-      const auto [r1, g1] = sets_.find(owner);
-      const auto [r2, g2] = sets_.find(other);
+      const auto [r1, g1] = sets_.find_in_flat(owner);
+      const auto [r2, g2] = sets_.find_in_flat(other);
       return r1 != r2 || intersection_product<Arithmetic>(gamma0.get(code, zero), g1, g2) != zero;
     }));
   }
@@ -208,6 +219,7 @@ public:
   const Graph& graph() const { return *graph_; }
   // the disjoint sets after the contraction, for `lexicographic_homologous_chain()`
   Augmented_union_find<Arithmetic>& sets() { return sets_; }
+  void release_sets() { sets_ = Augmented_union_find<Arithmetic>(); }
   // comparisons of the contraction that the double evaluations could not decide
   std::size_t number_of_exact_comparisons() const { return exact_comparisons_; }
 

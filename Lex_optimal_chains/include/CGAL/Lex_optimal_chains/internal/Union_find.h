@@ -39,11 +39,28 @@ public:
   Index find(Index x)
   {
     CGAL_precondition(x < parent_.size());
-    while(parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];
-      x = parent_[x];
+    for(;;) {
+      const Index p = parent_[x];
+      if(p == x) return x;
+      const Index gp = parent_[p];
+      if(gp == p) return p; // nothing to shorten: no write
+      parent_[x] = gp;
+      x = gp;
     }
-    return x;
+  }
+
+  // Points every element directly at its root.
+  void flatten()
+  {
+    for(Index x = 0; x < parent_.size(); ++x) parent_[x] = find(x);
+  }
+
+  // `find(x)` when every element points directly at its root (after `flatten()`, before any
+  // link): reads one word.
+  Index find_in_flat(Index x) const
+  {
+    CGAL_precondition(parent_[parent_[x]] == parent_[x]);
+    return parent_[x];
   }
 
   // Hints that `find(x)` will be called soon (the parent array is read at random).
