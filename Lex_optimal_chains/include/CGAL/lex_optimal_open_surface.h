@@ -227,42 +227,44 @@ insert_boundary(Triangulation& dt, const std::vector<std::vector<Point>>& polyli
 }
 
 // The soup of the chain, its vertices sorted by coordinates and its triangles sorted, so that
-// the output does not depend on the input order or on memory addresses.
+// the output does not depend on the input order or on memory addresses. `chain` is emptied
+// (freed once read: this runs at the peak of memory).
 template <class Triangulation, class Point>
 void chain_soup(const typename Triangulation::Triangulation_data_structure& tds,
-                const std::vector<std::pair<typename Triangulation::Facet, std::int64_t>>& chain, bool oriented,
+                std::vector<std::pair<typename Triangulation::Facet, std::int64_t>>& chain, bool oriented,
                 const std::set<typename Triangulation::Vertex_handle>& drop, std::vector<Point>& points,
                 std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
 {
   using Vertex = typename Triangulation::Vertex;
-  const std::vector<const Vertex*> dropped_vertices = [&] {
-    std::vector<const Vertex*> v;
-    for(const auto& h : drop) v.push_back(&*h);
+  const Handle_index_map<Vertex> dense(tds.vertices().begin(), tds.vertices().end());
+  const std::vector<std::uint32_t> dropped_vertices = [&] {
+    std::vector<std::uint32_t> v;
+    for(const auto& h : drop) v.push_back(dense.index(&*h));
     std::sort(v.begin(), v.end());
     return v;
   }();
-  auto is_dropped = [&](const Vertex* v) { return std::binary_search(dropped_vertices.begin(), dropped_vertices.end(), v); };
-  std::vector<std::array<const Vertex*, 3>> kept;
-  kept.reserve(chain.size());
+  auto is_dropped = [&](std::uint32_t v) { return std::binary_search(dropped_vertices.begin(), dropped_vertices.end(), v); };
+  // the triangles by dense vertex numbers first, renumbered below
+  triangles.clear();
+  triangles.reserve(chain.size());
   dropped = 0;
   for(const auto& fk : chain) {
     const auto& c = fk.first.first;
     const int i = fk.first.second;
-    std::array<const Vertex*, 3> t{{&*c->vertex((i + 1) & 3), &*c->vertex((i + 2) & 3), &*c->vertex((i + 3) & 3)}};
+    std::array<std::uint32_t, 3> t{{dense.index(&*c->vertex((i + 1) & 3)), dense.index(&*c->vertex((i + 2) & 3)),
+                                    dense.index(&*c->vertex((i + 3) & 3))}};
     if(i & 1) std::swap(t[1], t[2]);
     if(!dropped_vertices.empty() && (is_dropped(t[0]) || is_dropped(t[1]) || is_dropped(t[2]))) { ++dropped; continue; }
-    kept.push_back(t);
+    triangles.push_back(t);
   }
+  std::vector<std::pair<typename Triangulation::Facet, std::int64_t>>().swap(chain);
   // the used vertices, numbered in the order of their points
-  const Handle_index_map<Vertex> dense(tds.vertices().begin(), tds.vertices().end());
   constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> number(tds.vertices().size(), unused);
+  std::vector<std::uint32_t> number(dense.size(), unused);
   std::vector<const Vertex*> used;
-  for(const auto& t : kept)
-    for(const Vertex* v : t) {
-      std::uint32_t& k = number[dense.index(v)];
-      if(k == unused) { k = 0; used.push_back(v); }
-    }
+  for(const auto& t : triangles)
+    for(const std::uint32_t v : t)
+      if(number[v] == unused) { number[v] = 0; used.push_back(dense.element(v)); }
   std::sort(used.begin(), used.end(), [](const Vertex* a, const Vertex* b) { return a->point() < b->point(); });
   points.clear();
   points.reserve(used.size());
@@ -270,14 +272,10 @@ void chain_soup(const typename Triangulation::Triangulation_data_structure& tds,
     number[dense.index(used[k])] = k;
     points.push_back(used[k]->point());
   }
-  auto index = [&](const Vertex* v) { return number[dense.index(v)]; };
-  triangles.clear();
-  triangles.reserve(kept.size());
-  for(const auto& t : kept) {
-    std::array<std::uint32_t, 3> f{{index(t[0]), index(t[1]), index(t[2])}};
-    if(oriented) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end()); // keeps the orientation
-    else std::sort(f.begin(), f.end());
-    triangles.push_back(f);
+  for(auto& t : triangles) {
+    for(std::uint32_t& v : t) v = number[v];
+    if(oriented) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // keeps the orientation
+    else std::sort(t.begin(), t.end());
   }
   std::sort(triangles.begin(), triangles.end());
 }
