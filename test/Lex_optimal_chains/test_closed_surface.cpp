@@ -16,10 +16,13 @@
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/Lex_optimal_chains/Lexicographic_min_cut.h>
 
+#include <boost/iterator/indirect_iterator.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -253,11 +256,50 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
   std::cout << ")\n";
 }
 
+// Dense indices over elements in blocks far apart in memory (a static array and a large heap
+// block, terabytes apart on Linux): the page table must not span the address range (it once
+// took 11 GB when the allocator placed the cells of a triangulation in two regions).
+static int static_block[3000];
+
+// peak resident memory of the process in MB (Linux), 0 elsewhere
+double peak_rss_mb()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while(std::getline(status, line))
+    if(line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024;
+  return 0;
+}
+
+void test_handle_index_map()
+{
+  std::vector<int> heap_block(std::size_t(1) << 22); // mmapped by glibc: far from the static array
+  std::vector<const int*> order; // runs: a piece of each block, twice
+  for(int i = 0; i < 1000; ++i) order.push_back(static_block + i);
+  for(int i = 0; i < 5000; ++i) order.push_back(heap_block.data() + 100000 + i);
+  for(int i = 2000; i < 3000; ++i) order.push_back(static_block + i);
+  for(int i = 0; i < 5000; ++i) order.push_back(heap_block.data() + 3000000 + i);
+  for(int& x : heap_block) x = 1; // resident before the peak is read
+  const double before = peak_rss_mb();
+  const LOC::internal::Handle_index_map<int> map(boost::make_indirect_iterator(order.begin()),
+                                                 boost::make_indirect_iterator(order.end()), 7);
+  assert(peak_rss_mb() - before < 64); // not gigabytes of page table
+  assert(map.size() == order.size());
+  for(std::uint32_t i = 0; i < order.size(); ++i) {
+    assert(map.index(order[i]) == i + 7);
+    assert(map.element(i + 7) == order[i]);
+  }
+  std::cout << "dense indices over blocks " << std::abs(reinterpret_cast<const char*>(heap_block.data()) -
+                                                         reinterpret_cast<const char*>(static_block)) / (1 << 20)
+            << " MB apart: OK\n";
+}
+
 int main(int argc, char** argv)
 {
   std::cout << std::unitbuf;
   const std::string data = argc > 1 ? argv[1] : "";
   Mesh m;
+  test_handle_index_map();
 
   // --- sphere, noisy, automatic interior -------------------------------------------------------
   {

@@ -61,6 +61,29 @@ void test_augmented_union_find(CGAL::Random& rng)
       sets.link_roots(fx.first, fy.first, Arithmetic::from_integer(delta));
     }
   }
+  // a forest given by parent pointers (as the contraction sets it), then flattened: the same
+  // path values through `find`, `find_in_flat` and after further links
+  for(int trial = 0; trial < 100; ++trial) {
+    const int n = rng.get_int(2, 60);
+    std::vector<std::uint32_t> parent(n);
+    std::vector<std::int64_t> link(n, 0), potential(n, 0); // potential: value of the path to the root
+    for(int x = 0; x < n; ++x) {
+      parent[x] = x == 0 || rng.get_double() < 0.2 ? std::uint32_t(x) : std::uint32_t(rng.get_int(0, x)); // parents first
+      if(parent[x] != std::uint32_t(x)) link[x] = rng.get_int(-4, 5);
+      potential[x] = parent[x] == std::uint32_t(x) ? 0 : link[x] + potential[parent[x]];
+    }
+    std::vector<std::uint32_t> root(n);
+    for(int x = 0; x < n; ++x) root[x] = parent[x] == std::uint32_t(x) ? x : root[parent[x]];
+    LOC::internal::Augmented_union_find<Arithmetic> sets(n);
+    sets.set_forest([&](std::uint32_t x) { return parent[x]; },
+                    [&](std::uint32_t x) { return Arithmetic::from_integer(link[x]); });
+    const bool flat = trial % 2 == 0;
+    if(flat) sets.flatten();
+    for(int x = 0; x < n; ++x) {
+      const auto f = flat ? sets.find_in_flat(x) : sets.find(x);
+      assert(f.first == root[x] && f.second == Arithmetic::from_integer(potential[x]));
+    }
+  }
 }
 
 // ----- chains as maps over canonically oriented simplices -----------------------------------

@@ -18,6 +18,7 @@
 #endif
 
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ template <class Point, class PointRange, class PointMap>
 std::vector<Point> finite_points(const PointRange& points, const PointMap& point_map)
 {
   std::vector<Point> pts;
+  // reserved: grown by doubling, the copy would leave freed blocks of up to half its size in
+  // the heap, resident under the triangulation
+  pts.reserve(std::size_t(std::distance(points.begin(), points.end())));
   for(const auto& e : points) {
     const Point& p = get(point_map, e);
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -58,14 +59,32 @@ public:
     low_ = reinterpret_cast<std::uintptr_t>(runs_.front().begin);
     const std::uintptr_t high = reinterpret_cast<std::uintptr_t>(runs_.back().begin + runs_.back().size);
     const std::size_t npages = (high - low_) / page_size + 1;
-    page_.assign(npages, 0);
-    std::size_t r = 0;
-    for(std::size_t k = 0; k < npages; ++k) {
-      const std::uintptr_t page_begin = low_ + k * page_size;
-      while(r + 1 < runs_.size() &&
-            reinterpret_cast<std::uintptr_t>(runs_[r].begin + runs_[r].size) <= page_begin)
-        ++r;
-      page_[k] = std::uint32_t(r);
+    // the pages that hold elements
+    std::size_t covered = 0;
+    for(const Run& run : runs_) covered += page_of(run.begin + run.size - 1) - page_of(run.begin) + 1;
+    if(npages <= 2 * covered + 1024) {
+      // compact: a table over all the pages of the address range
+      page_.assign(npages, 0);
+      std::size_t r = 0;
+      for(std::size_t k = 0; k < npages; ++k) {
+        const std::uintptr_t page_begin = low_ + k * page_size;
+        while(r + 1 < runs_.size() &&
+              reinterpret_cast<std::uintptr_t>(runs_[r].begin + runs_[r].size) <= page_begin)
+          ++r;
+        page_[k] = std::uint32_t(r);
+      }
+    } else {
+      // blocks far apart (the allocator may place them in different regions: the range can
+      // be terabytes): a hash table over the covered pages only
+      std::size_t slots = 16;
+      while(slots < 2 * covered) slots *= 2;
+      hashed_pages_.assign(slots, Hashed_page{empty_page, 0});
+      for(std::uint32_t r = std::uint32_t(runs_.size()); r-- > 0;) // the first run of a page last
+        for(std::size_t k = page_of(runs_[r].begin); k <= page_of(runs_[r].begin + runs_[r].size - 1); ++k) {
+          std::size_t h = page_hash(k);
+          while(hashed_pages_[h].page != empty_page && hashed_pages_[h].page != k) h = (h + 1) & (slots - 1);
+          hashed_pages_[h] = Hashed_page{k, r};
+        }
     }
   }
 
@@ -73,9 +92,8 @@ public:
 
   std::uint32_t index(const Element* p) const
   {
-    const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(p);
-    CGAL_precondition(!runs_.empty() && a >= low_);
-    std::size_t r = page_[(a - low_) / page_size];
+    CGAL_precondition(!runs_.empty() && reinterpret_cast<std::uintptr_t>(p) >= low_);
+    std::size_t r = first_run_of_page(page_of(p));
     while(!(p >= runs_[r].begin && p < runs_[r].begin + runs_[r].size)) {
       ++r;
       CGAL_assertion(r < runs_.size());
@@ -92,13 +110,34 @@ public:
   }
 
 private:
+  struct Hashed_page { std::size_t page; std::uint32_t run; };
+  static constexpr std::size_t empty_page = std::numeric_limits<std::size_t>::max();
+
+  std::size_t page_of(const Element* p) const { return (reinterpret_cast<std::uintptr_t>(p) - low_) / page_size; }
+  std::size_t page_hash(std::size_t k) const
+  {
+    return std::size_t((std::uint64_t(k) * 0x9E3779B97F4A7C15ull) >> 32) & (hashed_pages_.size() - 1);
+  }
+  // the first run (in address order) that has elements in page k, which must hold one
+  std::size_t first_run_of_page(std::size_t k) const
+  {
+    if(!page_.empty()) return page_[k];
+    std::size_t h = page_hash(k);
+    while(hashed_pages_[h].page != k) {
+      CGAL_assertion(hashed_pages_[h].page != empty_page);
+      h = (h + 1) & (hashed_pages_.size() - 1);
+    }
+    return hashed_pages_[h].run;
+  }
+
   static constexpr std::uintptr_t page_size = 1 << 14;
   static constexpr int index_page_bits = 7;
   std::vector<std::uint32_t> index_page_; // index page -> first run (in `by_index_`) that holds it
   std::uint32_t first_index_ = 0;
   std::vector<Run> runs_;     // sorted by address
   std::vector<Run> by_index_; // sorted by index
-  std::vector<std::uint32_t> page_;
+  std::vector<std::uint32_t> page_;         // page -> first run, over the address range when it is compact
+  std::vector<Hashed_page> hashed_pages_;    // otherwise over the covered pages only
   std::uintptr_t low_ = 0;
   std::size_t count_ = 0;
 };
