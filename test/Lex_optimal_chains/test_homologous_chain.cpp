@@ -422,11 +422,12 @@ std::vector<std::pair<Facet, std::int64_t>> full_algorithm_10(const DT& dt, cons
   dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
   for(const Cell_handle& c : hull) infinite.push_back(graph.position(c));
   auto sets = LOC::internal::sets_with_infinite_node<Arithmetic>(graph.number_of_cells(), infinite);
-  const auto chain = LOC::internal::lexicographic_homologous_chain<Arithmetic>(graph, sets, gamma0, relative,
-                                                                               [](double) { return true; });
+  auto chain = LOC::internal::lexicographic_homologous_chain<Arithmetic>(graph, sets, gamma0, relative,
+                                                                         [](double) { return true; });
+  LOC::internal::record_indices_to_codes(graph, chain);
   std::vector<std::pair<Facet, std::int64_t>> result;
   LOC::Open_surface_report report;
-  LOC::internal::write_chain<Arithmetic>(graph, chain, std::back_inserter(result), report);
+  LOC::internal::write_chain<Arithmetic>(dt, graph.cell_positions(), chain, std::back_inserter(result), report);
   return result;
 }
 

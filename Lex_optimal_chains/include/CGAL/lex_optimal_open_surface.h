@@ -25,6 +25,8 @@
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -226,59 +228,81 @@ insert_boundary(Triangulation& dt, const std::vector<std::vector<Point>>& polyli
   }
 }
 
-// The soup of the chain, its vertices sorted by coordinates and its triangles sorted, so that
-// the output does not depend on the input order or on memory addresses. `chain` is emptied
-// (freed once read: this runs at the peak of memory).
-template <class Triangulation, class Point>
-void chain_soup(const typename Triangulation::Triangulation_data_structure& tds,
-                std::vector<std::pair<typename Triangulation::Facet, std::int64_t>>& chain, bool oriented,
-                const std::set<typename Triangulation::Vertex_handle>& drop, std::vector<Point>& points,
-                std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
+// The soup of a chain, its vertices sorted by coordinates and its triangles sorted, so that
+// the output does not depend on the input order or on memory addresses. The facets of the
+// chain are given one by one (`add()`, as an output iterator receives them), so that the
+// chain itself is never stored: this runs at the peak of memory.
+template <class Triangulation>
+class Chain_soup_builder
 {
+public:
   using Vertex = typename Triangulation::Vertex;
-  const Handle_index_map<Vertex> dense(tds.vertices().begin(), tds.vertices().end());
-  const std::vector<std::uint32_t> dropped_vertices = [&] {
-    std::vector<std::uint32_t> v;
-    for(const auto& h : drop) v.push_back(dense.index(&*h));
-    std::sort(v.begin(), v.end());
-    return v;
-  }();
-  auto is_dropped = [&](std::uint32_t v) { return std::binary_search(dropped_vertices.begin(), dropped_vertices.end(), v); };
-  // the triangles by dense vertex numbers first, renumbered below
-  triangles.clear();
-  triangles.reserve(chain.size());
-  dropped = 0;
-  for(const auto& fk : chain) {
-    const auto& c = fk.first.first;
-    const int i = fk.first.second;
-    std::array<std::uint32_t, 3> t{{dense.index(&*c->vertex((i + 1) & 3)), dense.index(&*c->vertex((i + 2) & 3)),
-                                    dense.index(&*c->vertex((i + 3) & 3))}};
+  using Facet = typename Triangulation::Facet;
+  using Point = typename Triangulation::Point;
+
+  // `expected_size`, if not null, is read at the first `add()`: the number of facets to come.
+  Chain_soup_builder(const typename Triangulation::Triangulation_data_structure& tds, bool oriented,
+                     const std::set<typename Triangulation::Vertex_handle>& drop, const std::size_t* expected_size)
+    : dense_(tds.vertices().begin(), tds.vertices().end()), oriented_(oriented), expected_size_(expected_size)
+  {
+    for(const auto& h : drop) dropped_vertices_.push_back(dense_.index(&*h));
+    std::sort(dropped_vertices_.begin(), dropped_vertices_.end());
+  }
+
+  // the facet (c, i) with coefficient k > 0: the triangle outward of c
+  void add(const Facet& f, std::int64_t)
+  {
+    if(triangles_.empty() && expected_size_ != nullptr) triangles_.reserve(*expected_size_);
+    const auto& c = f.first;
+    const int i = f.second;
+    std::array<std::uint32_t, 3> t{{dense_.index(&*c->vertex((i + 1) & 3)), dense_.index(&*c->vertex((i + 2) & 3)),
+                                    dense_.index(&*c->vertex((i + 3) & 3))}};
     if(i & 1) std::swap(t[1], t[2]);
-    if(!dropped_vertices.empty() && (is_dropped(t[0]) || is_dropped(t[1]) || is_dropped(t[2]))) { ++dropped; continue; }
-    triangles.push_back(t);
+    if(!dropped_vertices_.empty() && (is_dropped(t[0]) || is_dropped(t[1]) || is_dropped(t[2]))) {
+      ++dropped_;
+      return;
+    }
+    triangles_.push_back(t); // by dense vertex numbers, renumbered by `finish()`
   }
-  std::vector<std::pair<typename Triangulation::Facet, std::int64_t>>().swap(chain);
-  // the used vertices, numbered in the order of their points
-  constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> number(dense.size(), unused);
-  std::vector<const Vertex*> used;
-  for(const auto& t : triangles)
-    for(const std::uint32_t v : t)
-      if(number[v] == unused) { number[v] = 0; used.push_back(dense.element(v)); }
-  std::sort(used.begin(), used.end(), [](const Vertex* a, const Vertex* b) { return a->point() < b->point(); });
-  points.clear();
-  points.reserve(used.size());
-  for(std::uint32_t k = 0; k < used.size(); ++k) {
-    number[dense.index(used[k])] = k;
-    points.push_back(used[k]->point());
+
+  // The points of the used vertices (sorted) and the triangles on them (sorted); the number
+  // of triangles dropped because they touch a dropped vertex.
+  void finish(std::vector<Point>& points, std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
+  {
+    // the used vertices, numbered in the order of their points
+    constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> number(dense_.size(), unused);
+    std::vector<const Vertex*> used;
+    for(const auto& t : triangles_)
+      for(const std::uint32_t v : t)
+        if(number[v] == unused) { number[v] = 0; used.push_back(dense_.element(v)); }
+    std::sort(used.begin(), used.end(), [](const Vertex* a, const Vertex* b) { return a->point() < b->point(); });
+    points.clear();
+    points.reserve(used.size());
+    for(std::uint32_t k = 0; k < used.size(); ++k) {
+      number[dense_.index(used[k])] = k;
+      points.push_back(used[k]->point());
+    }
+    for(auto& t : triangles_) {
+      for(std::uint32_t& v : t) v = number[v];
+      if(oriented_) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // keeps the orientation
+      else std::sort(t.begin(), t.end());
+    }
+    std::sort(triangles_.begin(), triangles_.end());
+    triangles.swap(triangles_);
+    dropped = dropped_;
   }
-  for(auto& t : triangles) {
-    for(std::uint32_t& v : t) v = number[v];
-    if(oriented) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // keeps the orientation
-    else std::sort(t.begin(), t.end());
-  }
-  std::sort(triangles.begin(), triangles.end());
-}
+
+private:
+  bool is_dropped(std::uint32_t v) const { return std::binary_search(dropped_vertices_.begin(), dropped_vertices_.end(), v); }
+
+  Handle_index_map<Vertex> dense_;
+  bool oriented_;
+  const std::size_t* expected_size_;
+  std::vector<std::uint32_t> dropped_vertices_;
+  std::vector<std::array<std::uint32_t, 3>> triangles_;
+  std::size_t dropped_ = 0;
+};
 
 } // namespace internal
 } // namespace Lex_optimal_chains
@@ -387,15 +411,19 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     if(verbose)
       std::cerr << "Lex_optimal_chains: Delaunay triangulation of " << dt.number_of_vertices() << " vertices in "
                 << report.delaunay_seconds << " s (" << report.number_of_removed_points << " points removed)\n";
-    std::vector<std::pair<typename Triangulation::Facet, std::int64_t>> chain;
-    if(field == LOC::Coefficient_field::Z2)
-      LOC::internal::optimal_chain_with_boundary<LOC::internal::Z2_arithmetic>(dt, cycle, np, callback, 0.35, std::back_inserter(chain), report);
-    else
-      LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.35, std::back_inserter(chain), report);
-    watch.lap();
     const std::set<typename Triangulation::Vertex_handle> none;
-    LOC::internal::chain_soup<Triangulation>(dt.tds(), chain, field == LOC::Coefficient_field::Q, drop ? boundary_only : none,
-                                             soup_points, soup, report.dropped_triangles);
+    // the facets go straight into the soup (the number of facets is in the report before the
+    // first one is written)
+    LOC::internal::Chain_soup_builder<Triangulation> builder(dt.tds(), field == LOC::Coefficient_field::Q,
+                                                             drop ? boundary_only : none, &report.number_of_facets);
+    auto sink = boost::make_function_output_iterator(
+      [&builder](const std::pair<typename Triangulation::Facet, std::int64_t>& fk) { builder.add(fk.first, fk.second); });
+    if(field == LOC::Coefficient_field::Z2)
+      LOC::internal::optimal_chain_with_boundary<LOC::internal::Z2_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
+    else
+      LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
+    watch.lap();
+    builder.finish(soup_points, soup, report.dropped_triangles);
     report.output_seconds = watch.lap();
     dt.clear(); // before the mesh is built: peak memory
     report.output_seconds += watch.lap();

@@ -220,6 +220,7 @@ public:
   // the disjoint sets after the contraction, for `lexicographic_homologous_chain()`
   Augmented_union_find<Arithmetic>& sets() { return sets_; }
   void release_sets() { sets_ = Augmented_union_find<Arithmetic>(); }
+  void release_graph() { graph_.reset(); }
   // comparisons of the contraction that the double evaluations could not decide
   std::size_t number_of_exact_comparisons() const { return exact_comparisons_; }
 
