@@ -53,7 +53,7 @@ struct Open_surface_report
   double representative_seconds = 0;             ///< time of Algorithm 11
   double order_seconds = 0;                      ///< time to sort the triangles
   double optimal_chain_seconds = 0;              ///< time of Algorithm 10
-  double output_seconds = 0;                     ///< time to build the mesh
+  double output_seconds = 0;                     ///< time to write the chain (and to build the mesh, for a reconstruction)
   double total_seconds = 0;                      ///< time of the whole call
   std::size_t mesh_vertices = 0;                 ///< vertices of the output mesh (reconstruction only)
   std::size_t mesh_faces = 0;                    ///< faces of the output mesh (reconstruction only)
@@ -190,11 +190,12 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
   contracted.release_sets();
   record_indices_to_codes(graph, chain);
   contracted.release_graph();
-  write_chain<Arithmetic>(dt, cells, chain, out, report);
   report.optimal_chain_seconds = watch.lap();
   if(verbose)
-    std::cerr << "Lex_optimal_chains: optimal chain of " << report.number_of_facets << " triangles in "
+    std::cerr << "Lex_optimal_chains: optimal chain of " << chain.size() << " triangles in "
               << report.optimal_chain_seconds << " s\n";
+  write_chain<Arithmetic>(dt, cells, chain, out, report);
+  report.output_seconds += watch.lap();
 }
 
 template <class NamedParameters>

@@ -123,6 +123,10 @@ lexicographic_homologous_chain(const Graph& graph, Augmented_union_find<Arithmet
   std::vector<std::pair<std::size_t, Value>> result;
   const auto& records = graph.records();
   const std::size_t m = records.size();
+  // at most one entry per record; the pages beyond the result are never touched (after a
+  // contraction, most records are in the result, and growing it would hold 1.5 times its
+  // size at the peak of memory)
+  result.reserve(m);
   constexpr std::size_t ahead = 16;
   for(std::size_t t = 0; t < m; ++t) {
     if((t & 0xfffff) == 0 && !progress(double(t) / double(m)))
