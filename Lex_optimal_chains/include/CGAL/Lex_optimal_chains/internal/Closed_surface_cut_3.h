@@ -388,23 +388,30 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
     cut_a = Graph::owner_position(r);
     cut_b = Graph::other_position(r);
   }
+  // A component of the contraction stays whole on one side, unless the smallest edge is one
+  // of its contractions: it is a node of the sides, named by its label, and only the cells of
+  // a split component are nodes of their own, joined by its other contractions.
   Union_find& sides = contracted.sets(); // the contraction's sets are not needed any more
   sides.reset(n);
-  std::uint32_t sink_root = sides.find(sinks.front());
-  for(std::uint32_t s : sinks) sink_root = sides.unite(sink_root, s);
-  for(std::uint32_t c = 0; c < n; ++c) {
-    const std::uint32_t d = across[c];
-    if(d == c || (c == cut_a && d == cut_b) || (c == cut_b && d == cut_a)) continue;
-    sides.unite(c, d);
-  }
+  const std::uint32_t split_label = smallest.contraction ? labels[cut_a] : std::numeric_limits<std::uint32_t>::max();
+  auto node = [&](std::uint32_t c) { return labels[c] == split_label ? c : labels[c]; };
+  if(smallest.contraction)
+    for(std::uint32_t c = 0; c < n; ++c) {
+      if(labels[c] != split_label) continue;
+      const std::uint32_t d = across[c];
+      if(d == c || (c == cut_a && d == cut_b) || (c == cut_b && d == cut_a)) continue;
+      sides.unite(c, d);
+    }
+  std::uint32_t sink_root = sides.find(node(sinks.front()));
+  for(std::uint32_t s : sinks) sink_root = sides.unite(sink_root, node(s));
   for(std::uint32_t e = 0; e < tree.size(); ++e) {
     if(!smallest.contraction && e == smallest.index) continue;
     const auto& r = contracted.graph().records()[tree[e]];
-    sides.unite(Graph::owner_position(r), Graph::other_position(r));
+    sides.unite(node(Graph::owner_position(r)), node(Graph::other_position(r)));
   }
-  const std::uint32_t inside_root = sides.find(source);
+  const std::uint32_t inside_root = sides.find(node(source));
   inside.assign(n, false);
-  for(std::uint32_t c = 0; c < n; ++c) inside[c] = sides.find(c) == inside_root;
+  for(std::uint32_t c = 0; c < n; ++c) inside[c] = sides.find(node(c)) == inside_root;
   if(!progress(0.6))
     throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
 
