@@ -51,7 +51,7 @@ struct Open_surface_report
   std::size_t number_of_multiple_facets = 0;     ///< of those, triangles whose coefficient is not 1 or -1 (Q only)
   double delaunay_seconds = 0;                   ///< time to build the Delaunay triangulation
   double representative_seconds = 0;             ///< time of Algorithm 11
-  double order_seconds = 0;                      ///< time to sort the triangles
+  double order_seconds = 0;                      ///< time to contract the dual graph and sort the triangles left
   double optimal_chain_seconds = 0;              ///< time of Algorithm 10
   double output_seconds = 0;                     ///< time to write the chain (and to build the mesh, for a reconstruction)
   double total_seconds = 0;                      ///< time of the whole call
@@ -143,8 +143,7 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
   const double span = 1.0 - progress_from;
   Stopwatch watch;
   const Handle_index_map<typename Triangulation::Cell> cells(dt.tds().cells().begin(), dt.tds().cells().end());
-  if(cells.size() >= (std::size_t(1) << 30))
-    throw Input_error(Input_error_code::TOO_LARGE, "the triangulation has 2^30 cells or more: split the points into tiles");
+  Graph::check_number_of_cells(cells.size()); // before any record code is made
   report.number_of_vertices = dt.number_of_vertices();
   report.number_of_triangles = Graph::number_of_finite_facets(dt);
   Record_values<Value> gamma0(cells.size());

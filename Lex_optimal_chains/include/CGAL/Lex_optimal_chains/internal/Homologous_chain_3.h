@@ -201,7 +201,7 @@ public:
       };
       sets_.set_forest(parent, [&](std::uint32_t c) {
         const std::uint32_t d = across[c];
-        if(!gamma0.may_contain(c) && !gamma0.may_contain(d)) return zero; // Gamma0 has no facet of c
+        if(!gamma0.may_contain(c) && !gamma0.may_contain(d)) return zero; // no record of Gamma0 is theirs
         const std::pair<std::uint32_t, int> facet = Graph::facet_between(dt, cells, c, d);
         const Value v = gamma0.get((facet.first << 2) | std::uint32_t(facet.second), zero);
         return facet.first == c ? v : Arithmetic::negate(v);

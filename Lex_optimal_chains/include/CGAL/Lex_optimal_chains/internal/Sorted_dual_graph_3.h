@@ -153,9 +153,7 @@ public:
                       Keep&& keep)
     : dt_(dt), cells_(cells)
   {
-    if(cells_.size() >= (std::size_t(1) << 30))
-      throw Input_error(Input_error_code::TOO_LARGE,
-                        "the triangulation has 2^30 cells or more: split the points into tiles");
+    check_number_of_cells(cells_.size());
     auto t0 = std::chrono::steady_clock::now();
     build_records(progress, keep);
     auto t1 = std::chrono::steady_clock::now();
@@ -163,6 +161,14 @@ public:
     auto t2 = std::chrono::steady_clock::now();
     key_seconds_ = std::chrono::duration<double>(t1 - t0).count();
     sort_seconds_ = std::chrono::duration<double>(t2 - t1).count() - repair_seconds_;
+  }
+
+  // Throws TOO_LARGE if the record codes (position << 2 | index) cannot number `n` cells.
+  static void check_number_of_cells(std::size_t n)
+  {
+    if(n >= (std::size_t(1) << 30))
+      throw Input_error(Input_error_code::TOO_LARGE,
+                        "the triangulation has 2^30 cells or more: split the points into tiles");
   }
 
   // timings of the stages (statistics)
