@@ -117,17 +117,15 @@ public:
 
   // Builds the sets of a forest given by parent pointers: `parent(x)` is the parent of x
   // (x itself for a root) and `value(x)` the value of the path from x to its parent. All
-  // elements must be alone before. A root with children gets rank 1: the ranks are only a
-  // balance, every value stays right.
+  // elements must be alone before. The ranks stay 0: they only balance the later links, and
+  // every value stays right whatever they are.
   template <class Parent, class LinkValue>
   void set_forest(const Parent& parent, const LinkValue& value)
   {
     for(Index x = 0; x < nodes_.size(); ++x) {
       CGAL_precondition(nodes_[x].parent() == x);
       const Index p = parent(x);
-      if(p == x) continue;
-      nodes_[x].set(p, value(x));
-      if(rank_[p] == 0) rank_[p] = 1;
+      if(p != x) nodes_[x].set(p, value(x));
     }
   }
 

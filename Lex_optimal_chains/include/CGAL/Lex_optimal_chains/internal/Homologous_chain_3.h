@@ -197,7 +197,7 @@ public:
       // owner to the other cell, negated from the other cell to the owner.
       auto parent = [&across](std::uint32_t c) {
         const std::uint32_t d = across[c];
-        return across[d] == c && d < c ? c : d;
+        return d < c && across[d] == c ? c : d;
       };
       sets_.set_forest(parent, [&](std::uint32_t c) {
         const std::uint32_t d = across[c];
