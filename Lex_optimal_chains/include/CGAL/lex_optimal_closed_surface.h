@@ -160,9 +160,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   Contracted_dual_graph_3<Triangulation> contracted(dt, cells, sources, sinks,
                                                     Stage_progress{&callback, progress_from, progress_from + 0.6 * span});
   const Graph& graph = contracted.graph(); // released after the cut
-  report.number_of_exactly_ordered_triangles = contracted.number_of_exact_comparisons() + graph.number_of_exactly_sorted_records();
-  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
-  report.order_seconds = watch.lap();
+  report_order_statistics(contracted, watch.lap(), report);
   if(verbose)
     std::cerr << "Lex_optimal_chains: contracted the cells across their largest facets ("
               << contracted.number_of_exact_comparisons() << " comparisons made exactly), then ordered the "

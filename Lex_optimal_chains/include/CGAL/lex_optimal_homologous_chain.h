@@ -174,9 +174,7 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
   Contracted_homologous_graph_3<Arithmetic, Triangulation> contracted(
     dt, cells, infinite, gamma0, relative, Stage_progress{&callback, progress_from, progress_from + 0.7 * span});
   const Graph& graph = contracted.graph();
-  report.number_of_exactly_ordered_triangles = contracted.number_of_exact_comparisons() + graph.number_of_exactly_sorted_records();
-  report.number_of_triangles_in_close_runs = graph.number_of_records_in_runs();
-  report.order_seconds = watch.lap();
+  report_order_statistics(contracted, watch.lap(), report);
   if(verbose)
     std::cerr << "Lex_optimal_chains: contracted the cells across their largest facets ("
               << contracted.number_of_exact_comparisons() << " comparisons made exactly), then ordered the "

@@ -185,6 +185,17 @@ std::size_t cells_across_largest_facets(const Triangulation& dt,
   return exact;
 }
 
+// Fills the order fields of a report (closed or open surfaces) from a contracted dual graph
+// (`Contracted_dual_graph_3` or `Contracted_homologous_graph_3`).
+template <class Contracted, class Report>
+void report_order_statistics(const Contracted& contracted, double seconds, Report& report)
+{
+  report.number_of_exactly_ordered_triangles =
+    contracted.number_of_exact_comparisons() + contracted.graph().number_of_exactly_sorted_records();
+  report.number_of_triangles_in_close_runs = contracted.graph().number_of_records_in_runs();
+  report.order_seconds = seconds;
+}
+
 } // namespace internal
 } // namespace Lex_optimal_chains
 } // namespace CGAL
