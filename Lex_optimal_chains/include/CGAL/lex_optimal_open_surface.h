@@ -252,7 +252,8 @@ public:
   // the facet (c, i) with coefficient k > 0: the triangle outward of c
   void add(const Facet& f, std::int64_t)
   {
-    if(triangles_.empty() && expected_size_ != nullptr) triangles_.reserve(*expected_size_);
+    if(!reserved_ && expected_size_ != nullptr) triangles_.reserve(*expected_size_);
+    reserved_ = true;
     const auto& c = f.first;
     const int i = f.second;
     std::array<std::uint32_t, 3> t{{dense_.index(&*c->vertex((i + 1) & 3)), dense_.index(&*c->vertex((i + 2) & 3)),
@@ -299,6 +300,7 @@ private:
   Handle_index_map<Vertex> dense_;
   bool oriented_;
   const std::size_t* expected_size_;
+  bool reserved_ = false;
   std::vector<std::uint32_t> dropped_vertices_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::size_t dropped_ = 0;
