@@ -165,8 +165,8 @@ public:
   // `resting` (if not empty): lines that do not move either
   Line_descent(const std::vector<Line_state>& lines, const Energy_terms& terms, const Energy_weights& w,
                const std::vector<bool>& resting = {})
-    : w_(w), concurrency_{-w.concurrency_weight, w.concurrency_weight},
-      orthogonality_{-w.orthogonality_weight, w.orthogonality_weight}, coefficients_(lines.size())
+    : w_(w), concurrency_{0, -w.concurrency_weight, w.concurrency_weight},
+      orthogonality_{0, -w.orthogonality_weight, w.orthogonality_weight}, coefficients_(lines.size())
   {
     const std::size_t n = lines.size();
     for(std::size_t i = 0; i < n; ++i) coefficients_[i] = lines[i].coefficients;
@@ -242,18 +242,18 @@ public:
     for(std::uint32_t t = row.first_triplet; t < end_t; ++t) {
       const Vector_3d bc = cross(coefficients_[triplet_partners_[t][0]], coefficients_[triplet_partners_[t][1]]);
       const double det = dot(L, bc);
-      if(!(std::abs(det) < w_.collapse_distance) || det == 0) continue;
-      // the sign by a lookup, not a branch: it changes from step to step in the kinks of |det|
-      // (a branch made the descent twice as slow when the compiler did not inline step())
-      const double s = concurrency_[det > 0];
+      // The weight by a lookup, not a branch: the sign changes from step to step in the kinks
+      // of |det| (a branch on it made the descent twice as slow when the compiler did not
+      // inline step()), and whether |det| < eps is known to the branch predictor only while
+      // the moving lines are few (the steps of 17,641 lines took twice as long per line).
+      const double s = concurrency_[term_case(det, w_.collapse_distance)];
       d[0] += s * bc[0]; d[1] += s * bc[1]; d[2] += s * bc[2];
     }
     const std::uint32_t end_p = m + 1 < moving_.size() ? moving_[m + 1].first_pair : end_pairs_;
     for(std::uint32_t p = row.first_pair; p < end_p; ++p) {
       const Vector_3d& b = coefficients_[pair_partners_[p]];
       const double dotp = L[0] * b[0] + L[1] * b[1];
-      if(!(std::abs(dotp) < w_.sin_maximum_angle) || dotp == 0) continue;
-      const double s = orthogonality_[dotp > 0];
+      const double s = orthogonality_[term_case(dotp, w_.sin_maximum_angle)];
       d[0] += s * b[0]; d[1] += s * b[1];
     }
     return d;
@@ -276,6 +276,13 @@ public:
   }
 
 private:
+  // which weight a term min(threshold, |x|) gives its derivative: 0 (constant term, or x = 0:
+  // no direction), 1 (-lambda, x < 0) or 2 (+lambda, x > 0)
+  static int term_case(double x, double threshold)
+  {
+    return int(std::abs(x) < threshold) * (2 * int(x > 0) + int(x < 0));
+  }
+
   struct Moving_line
   {
     std::array<double, 6> metric; // effective metric: xx xy x yy y 1
@@ -283,7 +290,7 @@ private:
     std::uint32_t first_triplet = 0, first_pair = 0;
   };
   Energy_weights w_;
-  double concurrency_[2], orthogonality_[2]; // -lambda, +lambda
+  double concurrency_[3], orthogonality_[3]; // 0, -lambda, +lambda (indexed by term_case)
   std::vector<Vector_3d> coefficients_;
   std::vector<Moving_line> moving_;
   std::vector<std::array<std::uint32_t, 2>> triplet_partners_;
