@@ -18,6 +18,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -321,6 +322,14 @@ void test_builders()
   Partition p = PPS::line_partition_from_polygons_2(squares);
   CHECK(p.is_valid());
   CHECK(p.number_of_lines() == 5 && p.number_of_vertices() == 6 && p.number_of_edges() == 7 && p.number_of_cells() == 2);
+  // a polygon with a hole (a courtyard): 8 lines, 8 points, 8 edges, 2 cells (the ring and the yard)
+  CGAL::Polygon_2<K> outer, yard;
+  for(const auto& [x, y] : {std::pair(0., 0.), std::pair(4., 0.), std::pair(4., 4.), std::pair(0., 4.)}) outer.push_back(K::Point_2(x, y));
+  for(const auto& [x, y] : {std::pair(1., 1.), std::pair(1., 3.), std::pair(3., 3.), std::pair(3., 1.)}) yard.push_back(K::Point_2(x, y));
+  std::vector<CGAL::Polygon_with_holes_2<K>> courtyard{CGAL::Polygon_with_holes_2<K>(outer, &yard, &yard + 1)};
+  Partition h = PPS::line_partition_from_polygons_2(courtyard);
+  CHECK(h.is_valid());
+  CHECK(h.number_of_lines() == 8 && h.number_of_vertices() == 8 && h.number_of_edges() == 8 && h.number_of_cells() == 2);
   // the same from a CGAL arrangement, with a dangling edge that is dropped
   CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<EK>> arrangement;
   std::vector<EK::Segment_2> segments{{EK::Point_2(0, 0), EK::Point_2(2, 0)}, {EK::Point_2(2, 0), EK::Point_2(2, 1)},

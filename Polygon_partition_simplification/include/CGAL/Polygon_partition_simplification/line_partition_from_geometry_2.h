@@ -14,6 +14,8 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -31,6 +33,15 @@ Line_partition_2<GeomTraits> line_partition_from_pieces(std::vector<Exact_piece>
   return build_line_partition<GeomTraits>(
     pieces, {}, frame_of<typename Line_partition_2<GeomTraits>::Frame>(enclosing_rectangle(points)));
 }
+
+// the polygon type of the boundaries of a `Polygon_2` (itself) or a `Polygon_with_holes_2`
+template <class Polygon, class = void>
+struct Ring_of { using type = Polygon; };
+template <class Polygon>
+struct Ring_of<Polygon, std::void_t<decltype(std::declval<const Polygon&>().outer_boundary())>>
+{
+  using type = std::decay_t<decltype(std::declval<const Polygon&>().outer_boundary())>;
+};
 
 template <class Point>
 Exact_kernel::Point_2 exact_point(const Point& p, const std::string& where)
@@ -88,8 +99,7 @@ template <class PolygonRange>
 auto line_partition_from_polygons_2(const PolygonRange& polygons)
 {
   using Polygon = typename PolygonRange::value_type;
-  using Point = typename std::decay_t<decltype(*polygons.begin()->vertices_begin())>;
-  using K = typename Kernel_traits<Point>::Kernel;
+  using K = typename Kernel_traits<typename internal::Ring_of<Polygon>::type::Point_2>::Kernel;
   std::vector<internal::Exact_piece> pieces;
   std::size_t index = 0;
   auto add_ring = [&](const auto& ring) {
@@ -100,7 +110,7 @@ auto line_partition_from_polygons_2(const PolygonRange& polygons)
     }
   };
   for(const Polygon& polygon : polygons) {
-    if constexpr(std::is_same_v<Polygon, CGAL::Polygon_2<K, typename Polygon::Container>>)
+    if constexpr(std::is_same_v<typename internal::Ring_of<Polygon>::type, Polygon>)
       add_ring(polygon);
     else {
       add_ring(polygon.outer_boundary());
