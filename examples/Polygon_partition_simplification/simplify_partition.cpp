@@ -85,14 +85,14 @@ int main(int argc, char** argv)
 {
   CLI::App app{"Kinetic partition of 2D segments and its simplification in line space"};
   std::string input, output, svg;
-  double lambda1 = 0.005, lambda2 = 0.0005, alpha_max = 5;
-  double epsilon = -1;
+  double lambda1 = 0.5, lambda2 = 5, alpha_max = 5;
+  double epsilon = 0;
   bool json = false;
   app.add_option("SEGMENTS", input, "segments, one per line: x0 y0 x1 y1")->required();
   app.add_option("OUTPUT", output, "cells of the simplified partition (.geojson, .json or .wkt)")->required();
-  app.add_option("--lambda1", lambda1, "weight of the concurrency term (edge collapses)");
-  app.add_option("--lambda2", lambda2, "weight of the orthogonality term");
-  app.add_option("--epsilon", epsilon, "longest edge to collapse, input units (default: 1% of the half-diagonal)");
+  app.add_option("--lambda1", lambda1, "weight of the concurrency term (edge collapses), default 0.5");
+  app.add_option("--lambda2", lambda2, "weight of the orthogonality term, default 5");
+  app.add_option("--epsilon", epsilon, "longest edge to collapse, input units, also the unit of length of the energy (default: 1% of the half-diagonal)");
   app.add_option("--alpha-max", alpha_max, "angle to 90 degrees under which lines are pulled to orthogonality");
   app.add_option("--svg", svg, "draws the partition before and after, side by side");
   app.add_flag("--json", json, "prints one JSON line of statistics");
@@ -113,7 +113,7 @@ int main(int argc, char** argv)
     const auto stats = CGAL::simplify_polygon_partition_2(
       partition, PPS::parameters::concurrency_weight(lambda1,
                  PPS::parameters::orthogonality_weight(lambda2,
-                 PPS::parameters::collapse_distance(epsilon > 0 ? epsilon : 0.01 * scale,
+                 PPS::parameters::collapse_distance(app.count("--epsilon") > 0 ? epsilon : 0.01 * scale,
                  PPS::parameters::maximum_angle(alpha_max)))));
 
     std::vector<Partition::Polygon_with_holes_2> cells;

@@ -36,7 +36,7 @@ int main(int argc, char** argv)
             << partition.number_of_vertices() << " points, " << partition.number_of_cells() << " cells\n";
 
   const PPS::Simplification_statistics stats = CGAL::simplify_polygon_partition_2(
-    partition, PPS::parameters::concurrency_weight(0.005, PPS::parameters::orthogonality_weight(0.0005)));
+    partition, PPS::parameters::concurrency_weight(0.5, PPS::parameters::orthogonality_weight(5.)));
   std::cout << "simplified: " << stats.lines_after << " lines, " << stats.points_after << " points, "
             << stats.cells_after << " cells, " << stats.orthogonal_pairs_after << " orthogonal pairs, "
             << stats.line_merges << " line merges, " << stats.point_merges << " point merges\n";

@@ -1,9 +1,11 @@
 // Simplification in line space: the analytic gradient against finite differences, synthetic
 // building footprints (complexity drops, orthogonality appears, cells stay near the truth),
-// the roles of lambda1 and lambda2, invariance under exact similarities, validity under
+// the roles of lambda1 and lambda2, invariance under exact similarities and under the extent of
+// the scene (with the collapse distance in input units), validity under
 // randomized stress, the symmetric 360-gon, bad parameters.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/kinetic_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/line_partition_from_geometry_2.h>
 #include <CGAL/simplify_polygon_partition_2.h>
 
 #include "synthetic_footprints.h"
@@ -166,11 +168,11 @@ void test_parameters()
   const auto f = synthetic::make_footprints(5, 0.05, 3);
   const auto segments = to_segments(f.segments);
   Partition a = CGAL::kinetic_partition_2(segments), b = a, c = a, d = a;
-  const Stats low = simplify(a, 0.0002, 0.0005), high = simplify(b, 0.005, 0.0005);
-  std::cout << "lambda1 0.0002: " << low << "\nlambda1 0.005:  " << high << std::endl;
+  const Stats low = simplify(a, 0.02, 5), high = simplify(b, 0.5, 5);
+  std::cout << "lambda1 0.02: " << low << "\nlambda1 0.5:  " << high << std::endl;
   CHECK(high.lines_after < low.lines_after);
-  const Stats none = simplify(c, 0.005, 0), strong = simplify(d, 0.005, 0.005);
-  std::cout << "lambda2 0:     " << none << "\nlambda2 0.005: " << strong << std::endl;
+  const Stats none = simplify(c, 0.5, 0), strong = simplify(d, 0.5, 50);
+  std::cout << "lambda2 0:  " << none << "\nlambda2 50: " << strong << std::endl;
   CHECK(strong.orthogonal_pairs_after > none.orthogonal_pairs_after);
 }
 
@@ -184,7 +186,7 @@ void test_invariance()
   auto move = [](const K::Point_2& q) { return K::Point_2(-4 * q.y() + 4096, 4 * q.x() - 2048); };
   for(const auto& s : segments) moved.emplace_back(move(s.source()), move(s.target()));
   Partition p = CGAL::kinetic_partition_2(segments), q = CGAL::kinetic_partition_2(moved);
-  const Stats a = simplify(p, 0.005, 0.0005), b = simplify(q, 0.005, 0.0005);
+  const Stats a = simplify(p, 0.5, 5), b = simplify(q, 0.5, 5);
   CHECK(a.lines_after == b.lines_after && a.points_after == b.points_after && a.cells_after == b.cells_after &&
         a.orthogonal_pairs_after == b.orthogonal_pairs_after);
   // the same points (numbered differently: lines are numbered by their equations)
@@ -195,6 +197,39 @@ void test_invariance()
     for(const K::Point_2& b : y) best = std::min(best, std::abs(a.x() - b.x()) + std::abs(a.y() - b.y()));
     CHECK(best < 0.05); // 1.25 cm before scaling: rounding differs in the two frames
   }
+}
+
+// The energy is measured in units of the collapse distance: buildings given with a collapse
+// distance in meters are simplified nearly alike in a scene 60 times as large (a small square
+// 12 km away). Not exactly alike: the thresholds of the reductions (d_L, the disk of Eq. 3.15)
+// stay in the normalized frame. With the default collapse distance (1% of the half-diagonal,
+// 58 m there), every collapse is wanted, every reduction leaves an invalid partition and
+// nothing is simplified.
+void test_extent()
+{
+  const auto f = synthetic::make_footprints(6, 0.05, 5);
+  std::vector<Partition::Polygon_with_holes_2> cells;
+  CGAL::kinetic_partition_2(to_segments(f.segments)).cells(std::back_inserter(cells));
+  std::vector<Partition::Polygon_with_holes_2> far = cells;
+  CGAL::Polygon_2<K> square;
+  for(const auto& [x, y] : {std::pair(10000., 6000.), std::pair(10010., 6000.), std::pair(10010., 6010.), std::pair(10000., 6010.)})
+    square.push_back(K::Point_2(x, y));
+  far.emplace_back(square);
+  const Partition alone = PPS::line_partition_from_polygons_2(cells), with_far = PPS::line_partition_from_polygons_2(far);
+  CHECK(with_far.frame().scale > 50 * alone.frame().scale);
+  auto run = [](Partition p, double epsilon) {
+    return epsilon > 0 ? CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(epsilon))
+                       : CGAL::simplify_polygon_partition_2(p);
+  };
+  const double epsilon = 0.01 * alone.frame().scale; // the default of the small scene
+  const Stats a = run(alone, epsilon), b = run(with_far, epsilon), c = run(with_far, 0);
+  std::cout << "extent: alone " << a << "\n  12 km away, same epsilon: " << b << "\n  12 km away, default epsilon: " << c
+            << std::endl;
+  // the square keeps its 4 lines and its cell
+  const auto near = [](std::size_t x, std::size_t y, std::size_t slack) { return x + slack >= y && y + slack >= x; };
+  CHECK(near(b.cells_after, a.cells_after + 1, 2));
+  CHECK(near(b.lines_after, a.lines_after + 4, a.lines_after / 8));
+  CHECK(b.lines_after < b.lines_before / 3 && c.lines_after > c.lines_before / 2);
 }
 
 // Random segments and random parameters: the result is always a valid partition.
@@ -211,7 +246,7 @@ void test_stress()
     }
     Partition p = CGAL::kinetic_partition_2(s);
     const Stats st = CGAL::simplify_polygon_partition_2(
-      p, PPS::parameters::concurrency_weight(0.02 * u(rng), PPS::parameters::orthogonality_weight(0.005 * u(rng),
+      p, PPS::parameters::concurrency_weight(2 * u(rng), PPS::parameters::orthogonality_weight(50 * u(rng),
          PPS::parameters::collapse_distance(1 + 6 * u(rng), PPS::parameters::maximum_angle(20 * u(rng))))));
     CHECK(p.is_valid());
     CHECK(st.lines_after <= st.lines_before);
@@ -221,7 +256,8 @@ void test_stress()
 }
 
 // Section 3.3.1: a regular 360-gon; the simplification ends, breaks the symmetry, and does so
-// the same way every time.
+// the same way every time. (All its edges are alike: from lambda1 = 1.5 on, with these
+// parameters, they all collapse and the polygon vanishes.)
 void test_360_gon()
 {
   std::vector<K::Segment_2> s;
@@ -233,8 +269,9 @@ void test_360_gon()
   Partition p = CGAL::kinetic_partition_2(s), q = p;
   const auto run = [](Partition& x) {
     return CGAL::simplify_polygon_partition_2(
-      x, PPS::parameters::concurrency_weight(0.1, PPS::parameters::collapse_distance(10.,
-         PPS::parameters::initial_step(0.01, PPS::parameters::minimum_length(1.)))));
+      x, PPS::parameters::concurrency_weight(1.2, PPS::parameters::orthogonality_weight(0.1,
+         PPS::parameters::collapse_distance(10., PPS::parameters::initial_step(0.01,
+         PPS::parameters::minimum_length(1.))))));
   };
   const Stats a = run(p), b = run(q);
   std::cout << "360-gon: " << a << std::endl;
@@ -260,6 +297,7 @@ void test_bad_parameters()
   using C = PPS::Input_error_code;
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::concurrency_weight(-1.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::step_ratio(1.)); });
+  expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(0.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::maximum_angle(120.)); });
   CHECK(p.number_of_lines() == copy.number_of_lines() && p.number_of_edges() == copy.number_of_edges());
   // a callback that stops at once leaves a valid partition
@@ -297,6 +335,7 @@ int main()
   test_footprints();
   test_parameters();
   test_invariance();
+  test_extent();
   test_stress();
   test_360_gon();
   test_bad_parameters();

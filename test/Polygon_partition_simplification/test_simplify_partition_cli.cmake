@@ -42,6 +42,7 @@ expect_failure(missing "${WORK}/does_not_exist.txt" "${WORK}/missing.geojson")
 expect_failure(format "${WORK}/good.txt" "${WORK}/good.shp")
 expect_failure(negative_weight "${WORK}/good.txt" "${WORK}/negative.geojson" --lambda1 -1)
 expect_failure(angle "${WORK}/good.txt" "${WORK}/angle.geojson" --alpha-max 100)
+expect_failure(zero_epsilon "${WORK}/good.txt" "${WORK}/epsilon.geojson" --epsilon 0)
 
 # Good input: GeoJSON and WKT, the JSON line with its keys, the SVG.
 execute_process(COMMAND "${PROGRAM}" "${DATA}/footprints_25.txt" "${WORK}/out.geojson" --json --svg "${WORK}/out.svg"

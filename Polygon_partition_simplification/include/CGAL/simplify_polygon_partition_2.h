@@ -44,8 +44,8 @@ struct Simplification_statistics
   std::size_t removed_points = 0; ///< points left on a single line, or dangling, removed
   std::size_t far_points = 0;     ///< triplets below the threshold with a point outside the disk (b2)
   std::size_t rejected_rounds = 0; ///< reductions redone because they left the partition invalid (with some lines put back)
-  double energy_before = 0;       ///< energy of the input partition
-  double energy_after = 0;        ///< energy of the result
+  double energy_before = 0;       ///< energy of the input partition (in units of the collapse distance)
+  double energy_after = 0;        ///< energy of the result (in units of the collapse distance)
   double seconds = 0;             ///< running time
 };
 
@@ -56,9 +56,10 @@ struct Simplification_statistics
 
 simplifies a polygonal partition in line representation (section 3.3 of the thesis,
 Algorithm 1): gradient descents on the space of lines of the energy
-\f[ E = \frac12 \sum_i L_i^T M_i L_i
-      + \lambda_1 \sum_{(i,j,k)} \min(\epsilon, |\det(L_i, L_j, L_k)|)
+\f[ E = \frac{1}{2\epsilon^2} \sum_i L_i^T M_i L_i
+      + \lambda_1 \sum_{(i,j,k)} \min\left(1, \frac{|\det(L_i, L_j, L_k)|}{\epsilon}\right)
       + \lambda_2 \sum_{(i,j)} \min(\sin\alpha_{max}, |a_i a_j + b_i b_j|) \f]
+(the energy of Eq. 3.3 measured with the collapse distance \f$\epsilon\f$ as unit of length)
 interleaved with combinatorial reductions (line merges, point merges), until a descent
 brings no reduction. The triplets \f$(i, j, k)\f$ are the lines \f$j\f$ and \f$k\f$ through the
 two ends of an edge of line \f$i\f$ (and the triples of lines through a merged point); the
@@ -79,10 +80,16 @@ removed between the ends of an edge), the lines within one more point of them ar
 too, ring after ring; at worst the result of the round is the partition before it. The result
 is always a valid partition.
 
-Lengths are in input units and converted to the normalized frame of the partition (where
-the half-diagonal of its enclosing rectangle is 1); the weights \f$\lambda_1\f$ and
-\f$\lambda_2\f$ apply to the energy in that frame, so the result does not change when the
-input is moved, rotated or scaled (with its lengths).
+Lengths are in input units. The weights \f$\lambda_1\f$ and \f$\lambda_2\f$ have no unit: they
+weigh the terms of the energy measured in units of \f$\epsilon\f$, so the result does not change
+when the input is moved, rotated or scaled (with its lengths), and a building is simplified
+the same way in a scene of any extent when \f$\epsilon\f$ is given in input units. In the
+normalized frame of the partition (where the half-diagonal of its enclosing rectangle is 1,
+and \f$\epsilon_n = \epsilon / \mathrm{half\ diagonal}\f$), this is the energy of the thesis,
+\f$E_{thesis} = \frac12 \sum_i L_i^T M_i L_i + \lambda'_1 \sum \min(\epsilon_n, |\det|) + \lambda'_2 \sum
+\min(\sin\alpha_{max}, |\cos|)\f$, times \f$1/\epsilon_n^2\f$, with \f$\lambda'_1 = \lambda_1 \epsilon_n\f$
+and \f$\lambda'_2 = \lambda_2 \epsilon_n^2\f$: with the default \f$\epsilon_n = 0.01\f$, the defaults
+\f$\lambda_1 = 0.5\f$ and \f$\lambda_2 = 5\f$ are \f$\lambda'_1 = 0.005\f$ and \f$\lambda'_2 = 0.0005\f$.
 
 \tparam GeomTraits the kernel of the partition
 \tparam NamedParameters a sequence of named parameters
@@ -94,16 +101,18 @@ input is moved, rotated or scaled (with its lengths).
   \cgalParamNBegin{concurrency_weight}
     \cgalParamDescription{\f$\lambda_1\f$: larger values collapse more edges and merge more lines}
     \cgalParamType{`double`}
-    \cgalParamDefault{0.005}
+    \cgalParamDefault{0.5}
   \cgalParamNEnd
   \cgalParamNBegin{orthogonality_weight}
     \cgalParamDescription{\f$\lambda_2\f$: larger values make more pairs of lines orthogonal}
     \cgalParamType{`double`}
-    \cgalParamDefault{0.0005}
+    \cgalParamDefault{5}
   \cgalParamNEnd
   \cgalParamNBegin{collapse_distance}
-    \cgalParamDescription{\f$\epsilon\f$: edges shorter than this (input units) are pulled to a
-                          point; the concurrency term of a longer edge is constant}
+    \cgalParamDescription{\f$\epsilon\f$, positive: edges shorter than this (input units) are
+                          pulled to a point; the concurrency term of a longer edge is constant.
+                          It is also the unit of length of the energy: give it in input units
+                          to simplify scenes of different extents (tiles of a city) alike}
     \cgalParamType{`double`}
     \cgalParamDefault{1% of the half-diagonal of the partition}
   \cgalParamNEnd
@@ -122,7 +131,7 @@ input is moved, rotated or scaled (with its lengths).
   \cgalParamNBegin{point_merge_distance}
     \cgalParamDescription{\f$d_P\f$ (input units)}
     \cgalParamType{`double`}
-    \cgalParamDefault{1e-4 times the half-diagonal of the partition}
+    \cgalParamDefault{1% of the collapse distance}
   \cgalParamNEnd
   \cgalParamNBegin{line_merge_distance}
     \cgalParamDescription{\f$d_L\f$, between normalized line coordinates}
@@ -132,7 +141,7 @@ input is moved, rotated or scaled (with its lengths).
   \cgalParamNBegin{initial_step}
     \cgalParamDescription{\f$\alpha_0\f$ (1 is a full Newton step of the fidelity term)}
     \cgalParamType{`double`}
-    \cgalParamDefault{\f$\min(0.02, 2.5\,10^{-5} / \max(\lambda_1, 10\lambda_2))\f$: the concurrency and
+    \cgalParamDefault{\f$\min(0.02, 2.5\,10^{-3} / \max(\lambda_1, \lambda_2 / 10))\f$: the concurrency and
                       orthogonality terms then move lines by about the same amount whatever their weights}
   \cgalParamNEnd
   \cgalParamNBegin{step_ratio}
@@ -180,16 +189,16 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   const auto start = std::chrono::steady_clock::now();
 
   const double scale = partition.frame().scale;
-  const double lambda1 = choose_parameter(get_parameter(np, PPS::internal_np::concurrency_weight), 0.005);
-  const double lambda2 = choose_parameter(get_parameter(np, PPS::internal_np::orthogonality_weight), 0.0005);
+  const double lambda1 = choose_parameter(get_parameter(np, PPS::internal_np::concurrency_weight), 0.5);
+  const double lambda2 = choose_parameter(get_parameter(np, PPS::internal_np::orthogonality_weight), 5.);
   const double epsilon = choose_parameter(get_parameter(np, PPS::internal_np::collapse_distance), 0.01 * scale) / scale;
   const double alpha_max = choose_parameter(get_parameter(np, internal_np::maximum_angle), 5.);
   const double l_min = choose_parameter(get_parameter(np, internal_np::minimum_length), epsilon * scale) / scale;
-  const double d_p = choose_parameter(get_parameter(np, PPS::internal_np::point_merge_distance), 1e-4 * scale) / scale;
+  const double d_p = choose_parameter(get_parameter(np, PPS::internal_np::point_merge_distance), 0.01 * epsilon * scale) / scale;
   const double d_l = choose_parameter(get_parameter(np, PPS::internal_np::line_merge_distance), 1e-2);
   // by default, the L1 terms move lines by about the same amount whatever their weights
   const double alpha0 = choose_parameter(get_parameter(np, PPS::internal_np::initial_step),
-                                         std::min(0.02, 2.5e-5 / std::max({lambda1, 10 * lambda2, 1e-12})));
+                                         std::min(0.02, 2.5e-3 / std::max({lambda1, 0.1 * lambda2, 1e-12})));
   const double ratio = choose_parameter(get_parameter(np, PPS::internal_np::step_ratio), 0.97);
   const double alpha_min = choose_parameter(get_parameter(np, PPS::internal_np::minimum_step), 1e-9);
   const std::size_t max_iterations =
@@ -204,7 +213,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   };
   check(lambda1 >= 0 && std::isfinite(lambda1), "concurrency_weight must be >= 0");
   check(lambda2 >= 0 && std::isfinite(lambda2), "orthogonality_weight must be >= 0");
-  check(epsilon >= 0 && std::isfinite(epsilon), "collapse_distance must be >= 0");
+  check(epsilon > 0 && std::isfinite(epsilon), "collapse_distance must be > 0");
   check(alpha_max >= 0 && alpha_max <= 90, "maximum_angle must be in [0, 90] degrees");
   check(l_min > 0 && std::isfinite(l_min), "minimum_length must be > 0");
   check(d_p > 0 && d_l > 0 && std::isfinite(d_p) && std::isfinite(d_l),
@@ -219,8 +228,9 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   }
 
   PPS::internal::Energy_weights weights;
-  weights.concurrency_weight = lambda1;
-  weights.orthogonality_weight = lambda2;
+  // the energy measured with the collapse distance as unit of length, expressed in the normalized frame
+  weights.concurrency_weight = lambda1 * epsilon;
+  weights.orthogonality_weight = lambda2 * epsilon * epsilon;
   weights.collapse_distance = epsilon;
   weights.sin_maximum_angle = std::sin(alpha_max * 3.14159265358979323846 / 180.);
   weights.minimum_length = l_min;
@@ -276,7 +286,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   };
   stats.cells_before = number_of_cells(w);
   stats.orthogonal_pairs_before = partition.number_of_orthogonal_pairs();
-  stats.energy_before = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights);
+  stats.energy_before = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights) / (epsilon * epsilon);
 
   // Algorithm 1. A round is a descent followed by reductions. When the reductions leave an
   // invalid partition, the lines of the defective edges (and of the points at their ends) get
@@ -422,7 +432,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   }
 
   partition = to_partition(w);
-  stats.energy_after = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights);
+  stats.energy_after = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights) / (epsilon * epsilon);
   stats.lines_after = partition.number_of_lines();
   stats.points_after = partition.number_of_vertices();
   stats.cells_after = number_of_cells(w);
