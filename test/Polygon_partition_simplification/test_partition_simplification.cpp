@@ -298,6 +298,7 @@ void test_bad_parameters()
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::concurrency_weight(-1.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::step_ratio(1.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(0.)); });
+  expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(1e-200)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::maximum_angle(120.)); });
   CHECK(p.number_of_lines() == copy.number_of_lines() && p.number_of_edges() == copy.number_of_edges());
   // a callback that stops at once leaves a valid partition

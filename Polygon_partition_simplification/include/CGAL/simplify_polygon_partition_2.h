@@ -213,7 +213,8 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   };
   check(lambda1 >= 0 && std::isfinite(lambda1), "concurrency_weight must be >= 0");
   check(lambda2 >= 0 && std::isfinite(lambda2), "orthogonality_weight must be >= 0");
-  check(epsilon > 0 && std::isfinite(epsilon), "collapse_distance must be > 0");
+  check(epsilon > 0 && std::isfinite(epsilon) && std::isnormal(epsilon * epsilon),
+        "collapse_distance must be > 0 (and above 1e-150 times the half-diagonal: it is the unit of the energy)");
   check(alpha_max >= 0 && alpha_max <= 90, "maximum_angle must be in [0, 90] degrees");
   check(l_min > 0 && std::isfinite(l_min), "minimum_length must be > 0");
   check(d_p > 0 && d_l > 0 && std::isfinite(d_p) && std::isfinite(d_l),
