@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <iostream>
 #include <map>
+#include <random>
 #include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -77,12 +78,34 @@ void test_augmented_union_find(CGAL::Random& rng)
     LOC::internal::Augmented_union_find<Arithmetic> sets(n);
     sets.set_forest([&](std::uint32_t x) { return parent[x]; },
                     [&](std::uint32_t x) { return Arithmetic::from_integer(link[x]); });
+    assert(sets.is_forest());
     const bool flat = trial % 2 == 0;
     if(flat) sets.flatten();
     for(int x = 0; x < n; ++x) {
       const auto f = flat ? sets.find_in_flat(x) : sets.find(x);
       assert(f.first == root[x] && f.second == Arithmetic::from_integer(potential[x]));
     }
+  }
+  // parent pointers with a cycle (parents in any order otherwise) are refused: find() would
+  // loop forever
+  for(int trial = 0; trial < 20; ++trial) {
+    const int n = rng.get_int(3, 40);
+    std::vector<std::uint32_t> order(n), parent(n);
+    for(int x = 0; x < n; ++x) order[x] = std::uint32_t(x);
+    std::shuffle(order.begin(), order.end(), std::mt19937(trial));
+    for(int i = 0; i < n; ++i) parent[order[i]] = i == 0 ? order[0] : order[rng.get_int(0, i)]; // a tree
+    LOC::internal::Augmented_union_find<Arithmetic> tree(n);
+    tree.set_forest([&](std::uint32_t x) { return parent[x]; }, [&](std::uint32_t) { return Arithmetic::from_integer(1); });
+    assert(tree.is_forest());
+    parent[order[0]] = order[n - 1]; // the root under a leaf or another element: a cycle
+    LOC::internal::Augmented_union_find<Arithmetic> cyclic(n);
+    const auto behaviour = CGAL::set_error_behaviour(CGAL::THROW_EXCEPTION);
+    bool refused = false;
+    try {
+      cyclic.set_forest([&](std::uint32_t x) { return parent[x]; }, [&](std::uint32_t) { return Arithmetic::from_integer(1); });
+    } catch(const CGAL::Failure_exception&) { refused = true; }
+    CGAL::set_error_behaviour(behaviour);
+    assert(refused);
   }
 }
 

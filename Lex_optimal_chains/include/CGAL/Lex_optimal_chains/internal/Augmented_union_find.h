@@ -125,8 +125,26 @@ public:
     for(Index x = 0; x < nodes_.size(); ++x) {
       CGAL_precondition(nodes_[x].parent() == x);
       const Index p = parent(x);
+      CGAL_precondition(p < nodes_.size());
       if(p != x) nodes_[x].set(p, value(x));
     }
+    CGAL_assertion(is_forest()); // a cycle would make find() loop forever
+  }
+
+  // whether the parent pointers lead every element to a root (no cycle): O(n), each element
+  // walked once
+  bool is_forest() const
+  {
+    constexpr Index unknown = Index(-1), rooted = Index(-2);
+    std::vector<Index> state(nodes_.size(), unknown); // or the element whose walk reached it
+    for(Index x = 0; x < nodes_.size(); ++x) {
+      Index y = x;
+      while(state[y] == unknown && nodes_[y].parent() != y) { state[y] = x; y = nodes_[y].parent(); }
+      if(state[y] == x) return false; // back on this walk: a cycle
+      for(Index z = x; state[z] == x; z = nodes_[z].parent()) state[z] = rooted; // it ends at a root
+      state[y] = rooted;
+    }
+    return true;
   }
 
   // `find(x)` when every element points directly at its root (after `flatten()`, before any
