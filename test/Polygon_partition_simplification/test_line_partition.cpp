@@ -379,6 +379,20 @@ void test_bad_input()
     flat[0].push_back(K::Point_2(0, 0)); flat[0].push_back(K::Point_2(1, 0));
     PPS::line_partition_from_polygons_2(flat);
   });
+  // huge coordinates are refused by every builder (the kinetic partition refuses them too)
+  expect_error(C::NON_FINITE_COORDINATE, [] {
+    std::vector<CGAL::Polygon_2<K>> huge(1);
+    for(const auto& [x, y] : {std::pair(0., 0.), std::pair(1e120, 0.), std::pair(1e120, 1e120)}) huge[0].push_back(K::Point_2(x, y));
+    PPS::line_partition_from_polygons_2(huge);
+  });
+  // C arrays are ranges too
+  const K::Segment_2 walls[4] = {{{0, 0}, {2, 0}}, {{2, 0}, {2, 1}}, {{2, 1}, {0, 1}}, {{0, 1}, {0, 0}}};
+  CHECK(CGAL::kinetic_partition_2(walls).number_of_cells() >= 1);
+  CGAL::Polygon_2<K> squares[2];
+  for(double x : {0., 1.})
+    for(const auto& [dx, dy] : {std::pair(0., 0.), std::pair(1., 0.), std::pair(1., 1.), std::pair(0., 1.)})
+      squares[std::size_t(x)].push_back(K::Point_2(x + dx, dy));
+  CHECK(PPS::line_partition_from_polygons_2(squares).number_of_cells() == 2);
 }
 
 // The validity check on hand-made partitions of the unit square (lines x = 0, x = 1, y = 0,

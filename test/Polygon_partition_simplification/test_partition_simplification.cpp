@@ -145,7 +145,14 @@ void test_footprints()
     std::size_t rounds_seen = 0;
     const Stats s = CGAL::simplify_polygon_partition_2(
       p, PPS::parameters::callback(std::function<bool(const Partition&, const Stats&)>(
-           [&](const Partition& q, const Stats&) { CHECK(q.is_valid()); ++rounds_seen; return true; })));
+           [&](const Partition& q, const Stats& so_far) {
+             CHECK(q.is_valid());
+             // the statistics so far describe the partition passed
+             CHECK(so_far.lines_after == q.number_of_lines() && so_far.points_after == q.number_of_vertices() &&
+                   so_far.cells_after == q.number_of_cells() && so_far.seconds > 0);
+             ++rounds_seen;
+             return true;
+           })));
     std::cout << "footprints (seed " << seed << "): " << s << std::endl;
     CHECK(p.is_valid());
     CHECK(rounds_seen == s.rounds);
@@ -247,8 +254,9 @@ void test_stress()
     Partition p = CGAL::kinetic_partition_2(s);
     const Stats st = CGAL::simplify_polygon_partition_2(
       p, PPS::parameters::concurrency_weight(2 * u(rng), PPS::parameters::orthogonality_weight(50 * u(rng),
-         PPS::parameters::collapse_distance(1 + 6 * u(rng), PPS::parameters::maximum_angle(20 * u(rng))))));
-    CHECK(p.is_valid());
+         PPS::parameters::collapse_distance(1 + 6 * u(rng), PPS::parameters::initial_step(run % 4 == 0 ? 1. : 0.02 * u(rng) + 1e-6,
+         PPS::parameters::maximum_angle(20 * u(rng)))))));
+    CHECK(p.is_valid() && st.cells_after > 0);
     CHECK(st.lines_after <= st.lines_before);
     CHECK(st.cells_after == p.number_of_cells()); // Euler's formula against CGAL's arrangement
     CHECK(st.cells_before == CGAL::kinetic_partition_2(s).number_of_cells());
@@ -297,6 +305,7 @@ void test_bad_parameters()
   using C = PPS::Input_error_code;
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::concurrency_weight(-1.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::step_ratio(1.)); });
+  expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::initial_step(2.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(0.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(1e-200)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::maximum_angle(120.)); });

@@ -19,6 +19,8 @@
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -84,13 +86,12 @@ of zero length or shorter than 1e-100 (`ZERO_LENGTH_SEGMENT`) or twice the same 
 template <class SegmentRange,
           class NamedParameters = parameters::Default_named_parameters>
 Polygon_partition_simplification::Line_partition_2<
-  typename Kernel_traits<typename std::iterator_traits<
-    typename SegmentRange::const_iterator>::value_type>::Kernel>
+  typename Kernel_traits<std::decay_t<decltype(*std::begin(std::declval<const SegmentRange&>()))>>::Kernel>
 kinetic_partition_2(const SegmentRange& segments,
                     const NamedParameters& np = parameters::default_values())
 {
   namespace PPS = Polygon_partition_simplification;
-  using Segment = typename std::iterator_traits<typename SegmentRange::const_iterator>::value_type;
+  using Segment = std::decay_t<decltype(*std::begin(segments))>; // any range, C arrays included
   using K = typename Kernel_traits<Segment>::Kernel;
   using Partition = PPS::Line_partition_2<K>;
   using EK = PPS::internal::Exact_kernel;

@@ -139,7 +139,7 @@ and \f$\lambda'_2 = \lambda_2 \epsilon_n^2\f$: with the default \f$\epsilon_n = 
     \cgalParamDefault{1e-2}
   \cgalParamNEnd
   \cgalParamNBegin{initial_step}
-    \cgalParamDescription{\f$\alpha_0\f$ (1 is a full Newton step of the fidelity term)}
+    \cgalParamDescription{\f$\alpha_0\f$, in (0, 1] (1 is a full Newton step of the fidelity term)}
     \cgalParamType{`double`}
     \cgalParamDefault{\f$\min(0.02, 2.5\,10^{-3} / \max(\lambda_1, \lambda_2 / 10))\f$: the concurrency and
                       orthogonality terms then move lines by about the same amount whatever their weights}
@@ -160,9 +160,9 @@ and \f$\lambda'_2 = \lambda_2 \epsilon_n^2\f$: with the default \f$\epsilon_n = 
     \cgalParamDefault{100000}
   \cgalParamNEnd
   \cgalParamNBegin{callback}
-    \cgalParamDescription{called after every round with the current partition and statistics;
-                          returning `false` stops the simplification there (the partition is
-                          valid)}
+    \cgalParamDescription{called after every round with the current partition and the statistics
+                          so far (the `_after` fields describe that partition); returning `false`
+                          stops the simplification there (the partition is valid)}
     \cgalParamType{a callable `bool(const Line_partition_2<GeomTraits>&, const Simplification_statistics&)`}
     \cgalParamDefault{none}
   \cgalParamNEnd
@@ -186,7 +186,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   using parameters::is_default_parameter;
   using PPS::Input_error;
   using PPS::Input_error_code;
-  const auto start = std::chrono::steady_clock::now();
+  const auto clock_start = std::chrono::steady_clock::now();
 
   const double scale = partition.frame().scale;
   const double lambda1 = choose_parameter(get_parameter(np, PPS::internal_np::concurrency_weight), 0.5);
@@ -214,12 +214,13 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   check(lambda1 >= 0 && std::isfinite(lambda1), "concurrency_weight must be >= 0");
   check(lambda2 >= 0 && std::isfinite(lambda2), "orthogonality_weight must be >= 0");
   check(epsilon > 0 && std::isfinite(epsilon) && std::isnormal(epsilon * epsilon),
-        "collapse_distance must be > 0 (and above 1e-150 times the half-diagonal: it is the unit of the energy)");
+        "collapse_distance must be > 0, with a square that is a normal double in the normalized frame "
+        "(between about 1e-150 and 1e150 times the half-diagonal: it is the unit of the energy)");
   check(alpha_max >= 0 && alpha_max <= 90, "maximum_angle must be in [0, 90] degrees");
   check(l_min > 0 && std::isfinite(l_min), "minimum_length must be > 0");
   check(d_p > 0 && d_l > 0 && std::isfinite(d_p) && std::isfinite(d_l),
         "point_merge_distance and line_merge_distance must be > 0");
-  check(alpha0 > 0 && std::isfinite(alpha0), "initial_step must be > 0");
+  check(alpha0 > 0 && alpha0 <= 1, "initial_step must be in (0, 1] (1 is a full Newton step of the fidelity term)");
   check(ratio > 0 && ratio < 1, "step_ratio must be in (0, 1)");
   check(alpha_min > 0 && alpha_min < alpha0, "minimum_step must be in (0, initial_step)");
   {
@@ -286,6 +287,15 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     return PPS::internal::number_of_bounded_faces(x.vertex_lines.size(), ends);
   };
   stats.cells_before = number_of_cells(w);
+  // the `_after` fields and the time, for the partition `x` made from `w`
+  auto describe_result = [&](const Partition& x) {
+    stats.energy_after = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights) / (epsilon * epsilon);
+    stats.lines_after = x.number_of_lines();
+    stats.points_after = x.number_of_vertices();
+    stats.cells_after = number_of_cells(w);
+    stats.orthogonal_pairs_after = x.number_of_orthogonal_pairs();
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  };
   stats.orthogonal_pairs_before = partition.number_of_orthogonal_pairs();
   stats.energy_before = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights) / (epsilon * epsilon);
 
@@ -365,8 +375,9 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
       PPS::internal::Partition_reducer reducer(w, thresholds);
       counts = reducer.run(orientations);
       std::vector<std::size_t> defective;
-      PPS::internal::partition_defect(PPS::internal::Working_partition_view{w}, &defective, may_cross);
-      if(defective.empty() && reducer.conflicts().empty()) break;
+      const std::string defect =
+        PPS::internal::partition_defect(PPS::internal::Working_partition_view{w}, &defective, may_cross);
+      if(defect.empty() && reducer.conflicts().empty()) break;
       ++stats.rejected_rounds;
       bool progress = false;
       auto freeze = [&](PPS::internal::Index line) {
@@ -428,17 +439,16 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     stats.point_merges += counts.point_merges;
     stats.removed_points += counts.removed_points;
     stats.far_points += counts.far_points;
-    if(callback && !callback(to_partition(w), stats)) break;
+    if(callback) { // the statistics so far, the `_after` fields describing the partition passed
+      const Partition current = to_partition(w);
+      describe_result(current);
+      if(!callback(current, stats)) break;
+    }
     if(counts.total() == 0 || stats.iterations >= max_iterations) finished = true;
   }
 
   partition = to_partition(w);
-  stats.energy_after = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights) / (epsilon * epsilon);
-  stats.lines_after = partition.number_of_lines();
-  stats.points_after = partition.number_of_vertices();
-  stats.cells_after = number_of_cells(w);
-  stats.orthogonal_pairs_after = partition.number_of_orthogonal_pairs();
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  describe_result(partition);
   return stats;
 }
 

@@ -13,6 +13,7 @@
 #include <CGAL/Kernel_traits.h>
 
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -47,8 +48,9 @@ template <class Point>
 Exact_kernel::Point_2 exact_point(const Point& p, const std::string& where)
 {
   using K = typename Kernel_traits<Point>::Kernel;
-  if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())))
-    throw Input_error(Input_error_code::NON_FINITE_COORDINATE, where + " has a NaN or infinite coordinate");
+  const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+  if(!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > 1e100 || std::abs(y) > 1e100)
+    throw Input_error(Input_error_code::NON_FINITE_COORDINATE, where + " has a NaN, infinite or huge (beyond 1e100) coordinate");
   return CGAL::Cartesian_converter<K, Exact_kernel>()(p);
 }
 
@@ -92,13 +94,13 @@ Zero-length edges (repeated vertices) are ignored.
 
 \tparam PolygonRange a range of `CGAL::Polygon_2<K>` or `CGAL::Polygon_with_holes_2<K>`
 
-\throws Input_error when there is no edge (`EMPTY_INPUT`), a NaN or infinite coordinate
-(`NON_FINITE_COORDINATE`), or no cell (`NO_CELL`).
+\throws Input_error when there is no edge (`EMPTY_INPUT`), a NaN, infinite or huge (beyond 1e100)
+coordinate (`NON_FINITE_COORDINATE`), or no cell (`NO_CELL`).
 */
 template <class PolygonRange>
 auto line_partition_from_polygons_2(const PolygonRange& polygons)
 {
-  using Polygon = typename PolygonRange::value_type;
+  using Polygon = std::decay_t<decltype(*std::begin(polygons))>; // any range, C arrays included
   using K = typename Kernel_traits<typename internal::Ring_of<Polygon>::type::Point_2>::Kernel;
   std::vector<internal::Exact_piece> pieces;
   std::size_t index = 0;

@@ -218,7 +218,7 @@ public:
   }
 
   // One gradient step of every free line, in turn. Returns false, with the lines from the
-  // one whose gradient is not finite unchanged, if there is one.
+  // one whose gradient or new coordinates are not finite unchanged, if there is one.
   bool step(double alpha)
   {
     // Whether a term is constant (|det| >= eps) rarely changes from step to step: a branch on
@@ -261,9 +261,10 @@ private:
     for(std::size_t m = 0; m < moving_.size(); ++m) {
       const Vector_3d g = riemannian_gradient(coefficients_[moving_[m].line], moving_[m].metric,
                                               derivative_with<skip_constant_terms>(m));
-      if(!std::isfinite(g[0]) || !std::isfinite(g[1]) || !std::isfinite(g[2])) return false;
       Vector_3d& l = coefficients_[moving_[m].line];
-      l = normalized_line({l[0] - alpha * g[0], l[1] - alpha * g[1], l[2] - alpha * g[2]});
+      const Vector_3d moved = normalized_line({l[0] - alpha * g[0], l[1] - alpha * g[1], l[2] - alpha * g[2]});
+      if(!std::isfinite(moved[0]) || !std::isfinite(moved[1]) || !std::isfinite(moved[2])) return false;
+      l = moved;
     }
     return true;
   }

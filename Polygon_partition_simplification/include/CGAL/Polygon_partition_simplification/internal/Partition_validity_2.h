@@ -220,6 +220,7 @@ std::string partition_defect(const View& view, std::vector<std::size_t>* defecti
   };
   auto report = [&](const std::string& what) { if(first.empty()) first = what; return defective == nullptr; };
   auto all_edges = [&] { if(defective) for(std::size_t e = 0; e < ne; ++e) defective->push_back(e); };
+  if(ne == 0) return finish("the partition has no edge");
   std::vector<std::array<std::size_t, 2>> ends(ne);
   for(std::size_t e = 0; e < ne; ++e) {
     const auto edge = view.edge(e);
