@@ -594,6 +594,18 @@ int main(int argc, char** argv)
                                    LOC::parameters::exterior_points(std::vector<Point>{Point(0, 0, 0)}))); });
     expect_error(LOC::Input_error_code::CANCELLED,
                  [&] { run(sphere, LOC::parameters::callback(std::function<bool(double)>([](double x) { return x < 0.5; }))); });
+    // at the very end (progress 1) too, before the mesh is touched
+    expect_error(LOC::Input_error_code::CANCELLED,
+                 [&] { run(sphere, LOC::parameters::callback(std::function<bool(double)>([](double x) { return x < 1; }))); });
+    {
+      const DT dt(sphere.begin(), sphere.end());
+      std::vector<DT::Facet> written;
+      expect_error(LOC::Input_error_code::CANCELLED, [&] {
+        CGAL::lex_optimal_closed_surface(dt, std::back_inserter(written),
+          LOC::parameters::callback(std::function<bool(double)>([](double x) { return x < 1; })));
+      });
+      assert(written.empty()); // cancelled before anything was written
+    }
     // an open surface (a spherical cap) has no persistent interior
     std::vector<Point> cap;
     for(const Point& p : sample_sphere(8000, Point(0, 0, 0), 1, 0.0005)) if(p.z() > 0.3) cap.push_back(p);

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <set>
@@ -253,6 +254,11 @@ void test_bad_input(CGAL::Random& rng)
   nan_points[3] = Point(std::nan(""), 0, 0);
   expect_error(LOC::Input_error_code::NON_FINITE_COORDINATE, [&] { run(nan_points, {polygon}); });
   expect_error(LOC::Input_error_code::EMPTY_INPUT, [&] { LOC::footprint_boundary(std::vector<Point>()); });
+  // a callback that says no at the very end (progress 1) cancels too, before the mesh is touched
+  expect_error(LOC::Input_error_code::CANCELLED, [&] {
+    CGAL::lex_optimal_open_surface_reconstruction(points, std::vector<std::vector<Point>>{polygon}, mesh,
+      LOC::parameters::callback(std::function<bool(double)>([](double x) { return x < 1; })));
+  });
   assert(mesh.is_empty()); // nothing was added on error
 }
 

@@ -255,7 +255,8 @@ c->vertex((i+3)&3)`, with its last two vertices swapped when `i` is odd, is orie
     \cgalParamDefault{4}
   \cgalParamNEnd
   \cgalParamNBegin{callback}
-    \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels}
+    \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels (the last
+                          call, with 1, comes before anything is written to `facets`)}
     \cgalParamType{`std::function<bool(double)>`}
     \cgalParamDefault{none}
   \cgalParamNEnd
@@ -285,11 +286,11 @@ lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
   Lex_optimal_chains::internal::Handle_index_map<typename DT::Cell> cells;
   const std::vector<std::uint32_t> result =
     Lex_optimal_chains::internal::closed_surface_facets(dt, np, callback, 0.0, report, inside, cells);
+  Lex_optimal_chains::internal::report_progress(callback, 1.0); // before anything is written
   for(const std::uint32_t key : result) {
     const auto cell = dt.tds().cells().iterator_to(*const_cast<typename DT::Cell*>(cells.element(key >> 2)));
     *facets++ = typename DT::Facet(cell, int(key & 3));
   }
-  if(callback) callback(1.0);
   report.total_seconds = total.lap();
   return report;
 }
@@ -319,12 +320,14 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
     surface.reset(new Closed_surface_mesh_3<Triangulation>(std::move(facets), cells, vertex_positions, inside));
   }
   const double extraction_seconds = watch.lap();
+  report_progress(callback, 0.9);
   // the triangulation (ours) is freed before the rest of the surface is made: peak memory
   std::vector<bool>().swap(inside);
   dt.clear();
   const double clear_seconds = watch.lap();
   surface->complete();
   const double completion_seconds = watch.lap();
+  report_progress(callback, 1.0); // the last chance to cancel: the mesh is not modified before
   surface->build(mesh, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, mesh)));
   const Closed_surface_statistics& s = surface->statistics();
   report.mesh_vertices = s.vertices;
@@ -339,7 +342,6 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
     std::cerr << "Lex_optimal_chains: surface read from the triangulation in " << extraction_seconds
               << " s, triangulation freed in " << clear_seconds << " s, vertex copies and statistics in "
               << completion_seconds << " s, mesh built in " << build_seconds << " s\n";
-  if(callback) callback(1.0);
 }
 
 } // namespace internal

@@ -237,7 +237,7 @@ Open_surface_report run_on_triangulation(const Triangulation& dt, const NamedPar
   check_dimension(dt);
   if(coefficient_field_of(np) == Coefficient_field::Z2) run(Z2_arithmetic(), callback, report);
   else run(Integer_arithmetic(), callback, report);
-  if(callback) callback(1.0);
+  report_progress(callback, 1.0); // after the output iterator was written: false still cancels
   report.total_seconds = total.lap();
   return report;
 }
@@ -281,7 +281,8 @@ twice has the sum of its coefficients
     \cgalParamDefault{empty (absolute chains)}
   \cgalParamNEnd
   \cgalParamNBegin{callback}
-    \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels}
+    \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels (the last
+                          call, with 1, comes after the output iterator was written)}
     \cgalParamType{`std::function<bool(double)>`}
     \cgalParamDefault{none}
   \cgalParamNEnd

@@ -430,6 +430,7 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     dt.clear(); // before the mesh is built: peak memory
     report.output_seconds += watch.lap();
   });
+  LOC::internal::report_progress(callback, 1.0); // the last chance to cancel: the mesh is not modified before
   const std::size_t vertices_before = num_vertices(mesh), faces_before = num_faces(mesh);
   const LOC::internal::Chain_soup_statistics stats =
     LOC::internal::add_chain_soup(soup_points, soup, field == LOC::Coefficient_field::Q, mesh);
@@ -443,7 +444,6 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     std::cerr << "Lex_optimal_chains: soup and triangulation freed in " << report.output_seconds
               << " s, mesh built in " << build_seconds << " s\n";
   report.output_seconds += build_seconds;
-  if(callback) callback(1.0);
   report.total_seconds = total.lap();
   return report;
 }

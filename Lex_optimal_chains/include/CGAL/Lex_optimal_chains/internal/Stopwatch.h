@@ -6,6 +6,8 @@
 
 // Stage timings and the mapping of a stage's progress to the user's callback.
 
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+
 #include <chrono>
 #include <functional>
 
@@ -29,6 +31,12 @@ private:
 };
 
 // Maps the progress of one stage to [from, to] of the user's callback.
+// Reports `progress` to the callback, if there is one; throws CANCELLED when it returns false.
+inline void report_progress(const std::function<bool(double)>& callback, double progress)
+{
+  if(callback && !callback(progress)) throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+}
+
 struct Stage_progress
 {
   const std::function<bool(double)>* callback;
