@@ -388,8 +388,9 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
   using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
   using Point = typename boost::property_traits<Point_map>::value_type;
   using Kernel = typename Kernel_traits<Point>::Kernel;
-  static_assert(std::is_same<typename Kernel::FT, double>::value,
-                "lex_optimal_closed_surface_reconstruction needs points with double coordinates (e.g. Epick)");
+  static_assert(std::is_same<typename Kernel::FT, double>::value && bool(Kernel::Has_filtered_predicates),
+                "lex_optimal_closed_surface_reconstruction needs points of a kernel with double coordinates and exact (filtered) "
+                "predicates, such as Epick: the Delaunay triangulation is built with its predicates");
   using Input_error = Lex_optimal_chains::Input_error;
   using Code = Lex_optimal_chains::Input_error_code;
 

@@ -381,8 +381,9 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
   using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
   using Point = typename boost::property_traits<Point_map>::value_type;
   using Kernel = typename Kernel_traits<Point>::Kernel;
-  static_assert(std::is_same<typename Kernel::FT, double>::value,
-                "lex_optimal_open_surface_reconstruction needs points with double coordinates (e.g. Epick)");
+  static_assert(std::is_same<typename Kernel::FT, double>::value && bool(Kernel::Has_filtered_predicates),
+                "lex_optimal_open_surface_reconstruction needs points of a kernel with double coordinates and exact (filtered) "
+                "predicates, such as Epick: the Delaunay triangulation is built with its predicates");
 
   const Point_map point_map = choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map));
   const std::function<bool(double)> callback =
