@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_partition_simplification/IO/GeoJSON.h>
 #include <CGAL/Polygon_partition_simplification/line_partition_from_geometry_2.h>
 #include <CGAL/kinetic_partition_2.h>
+#include <CGAL/simplify_polygon_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
 #include <algorithm>
@@ -322,6 +323,29 @@ void test_builders()
   Partition p = PPS::line_partition_from_polygons_2(squares);
   CHECK(p.is_valid());
   CHECK(p.number_of_lines() == 5 && p.number_of_vertices() == 6 && p.number_of_edges() == 7 && p.number_of_cells() == 2);
+  // cells that touch at a corner (parcels of a cadastral map): only the unbounded face is
+  // pinched, the partition is valid and can be simplified
+  auto square_at = [](double x, double y, double size) {
+    CGAL::Polygon_2<K> sq;
+    for(const auto& [dx, dy] : {std::pair(0., 0.), std::pair(1., 0.), std::pair(1., 1.), std::pair(0., 1.)})
+      sq.push_back(K::Point_2(x + size * dx, y + size * dy));
+    return sq;
+  };
+  {
+    Partition corner = PPS::line_partition_from_polygons_2(std::vector<CGAL::Polygon_2<K>>{square_at(0, 0, 1), square_at(1, 1, 1)});
+    CHECK(corner.is_valid() && corner.number_of_cells() == 2);
+    CGAL::simplify_polygon_partition_2(corner);
+    CHECK(corner.is_valid() && corner.number_of_cells() == 2);
+    // the same two squares inside a larger one: the cell around them has a pinched hole
+    const Partition inside = PPS::line_partition_from_polygons_2(
+      std::vector<CGAL::Polygon_2<K>>{square_at(-1, -1, 4), square_at(0, 0, 1), square_at(1, 1, 1)});
+    CHECK(!inside.is_valid());
+    // a diamond touching the side of a square from inside: the cell around it is pinched
+    CGAL::Polygon_2<K> diamond;
+    for(const auto& [x, y] : {std::pair(2., 0.), std::pair(3., 1.), std::pair(2., 2.), std::pair(1., 1.)}) diamond.push_back(K::Point_2(x, y));
+    const Partition touching = PPS::line_partition_from_polygons_2(std::vector<CGAL::Polygon_2<K>>{square_at(0, 0, 4), diamond});
+    CHECK(!touching.is_valid());
+  }
   // a polygon with a hole (a courtyard): 8 lines, 8 points, 8 edges, 2 cells (the ring and the yard)
   CGAL::Polygon_2<K> outer, yard;
   for(const auto& [x, y] : {std::pair(0., 0.), std::pair(4., 0.), std::pair(4., 4.), std::pair(0., 4.)}) outer.push_back(K::Point_2(x, y));
@@ -511,8 +535,9 @@ void test_faces_against_arrangement()
     for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
       if(h->face() == h->twin()->face()) expected.push_back(edge_at(h));
     for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
+      if(f->is_unbounded()) continue; // pinched there, the boundary of no cell: cells touching at a corner
       std::vector<Arrangement::Halfedge_const_handle> ccbs;
-      if(!f->is_unbounded()) ccbs.push_back(f->outer_ccb());
+      ccbs.push_back(f->outer_ccb());
       for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
       for(auto start : ccbs) {
         std::map<Arrangement::Vertex_const_handle, Arrangement::Halfedge_const_handle> arrival;

@@ -227,7 +227,8 @@ public:
   edge joins two distinct points of its line; the edges meet only at common endpoints (no
   crossing, overlap, or point inside an edge), which is checked with exact predicates on
   the computed coordinates; every edge separates two different cells; the boundary of
-  every cell is made of simple polygons.
+  every cell is made of simple polygons (cells may touch at a corner: only the boundary of the
+  unbounded face, which is no cell, may pass twice through a point).
   */
   std::string defect() const { return analyze(nullptr); }
 

@@ -30,6 +30,7 @@
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 
 #include <algorithm>
 #include <array>
@@ -115,6 +116,60 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
 // The facial walks of a plane graph (no crossing, distinct points): appends to `bridges` the
 // edges with the same walk on both sides and to `pinched` the edges around the points that a
 // walk passes twice (the edges in and out of both passages).
+// Whether the facial walk from half-edge `start` turns clockwise (negative area, exactly): the
+// walks of the bounded faces turn counterclockwise, the outer boundary of each connected part
+// clockwise.
+template <class Source, class Target, class Next>
+bool is_clockwise_walk(const std::vector<std::array<double, 2>>& points, std::size_t start, const Source& source,
+                       const Target& target, const Next& next)
+{
+  using FT = CGAL::Exact_rational; // twice the area, exactly (the walk is rare: only pinched ones)
+  const auto& o = points[source(start)];
+  FT twice_area = 0;
+  std::size_t h = start;
+  do {
+    const auto& a = points[source(h)];
+    const auto& b = points[target(h)];
+    twice_area += (FT(a[0]) - o[0]) * (FT(b[1]) - o[1]) - (FT(a[1]) - o[1]) * (FT(b[0]) - o[0]);
+    h = next(h);
+  } while(h != start);
+  return CGAL::is_negative(twice_area);
+}
+
+// Whether point `v` lies inside the outer boundary of a connected part of the edges that does
+// not contain it (then in one of its cells): the ray from v towards +x crosses the edges of that
+// part an odd number of times (half-open rule on y, exact orientation tests).
+inline bool lies_in_another_part(const std::vector<std::array<double, 2>>& points,
+                                 const std::vector<std::array<std::size_t, 2>>& edges, std::size_t v)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<std::size_t> parent(points.size());
+  for(std::size_t x = 0; x < parent.size(); ++x) parent[x] = x;
+  auto find = [&](std::size_t x) {
+    while(parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for(const auto& e : edges) parent[find(e[0])] = find(e[1]);
+  const std::size_t own = find(v);
+  const K::Point_2 p(points[v][0], points[v][1]);
+  std::vector<std::size_t> crossings(points.size(), 0); // per part (indexed by its root)
+  for(const auto& e : edges) {
+    const std::size_t part = find(e[0]);
+    if(part == own) continue;
+    const auto& a = points[e[0]];
+    const auto& b = points[e[1]];
+    if((a[1] > p.y()) == (b[1] > p.y())) continue;
+    // the edge goes across the line y = p.y: does it cross it to the right of p?
+    const auto& low = a[1] < b[1] ? a : b;
+    const auto& high = a[1] < b[1] ? b : a;
+    if(CGAL::orientation(K::Point_2(low[0], low[1]), K::Point_2(high[0], high[1]), p) == CGAL::LEFT_TURN)
+      ++crossings[part];
+  }
+  for(std::size_t c : crossings)
+    if(c % 2 == 1) return true;
+  return false;
+}
+
 inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points,
                                 const std::vector<std::array<std::size_t, 2>>& edges,
                                 std::vector<std::size_t>& bridges, std::vector<std::size_t>& pinched)
@@ -161,21 +216,29 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   std::vector<std::uint32_t> walk_of(nh, none);
   std::vector<std::uint32_t> last_walk(nv, none), arrival(nv, none); // per point, in the current walk
   std::uint32_t walks = 0;
+  std::vector<std::size_t> walk_pinches;
   for(std::size_t start = 0; start < nh; ++start) {
     if(walk_of[start] != none) continue;
     std::size_t h = start;
+    walk_pinches.clear();
     do {
       walk_of[h] = walks;
       const std::size_t v = target(h);
       if(last_walk[v] == walks) // a second passage through v
         for(std::size_t in : {std::size_t(arrival[v]), h}) {
-          pinched.push_back(in / 2);
-          pinched.push_back(next(in) / 2);
+          walk_pinches.push_back(in / 2);
+          walk_pinches.push_back(next(in) / 2);
         }
       last_walk[v] = walks;
       arrival[v] = std::uint32_t(h);
       h = next(h);
     } while(h != start);
+    // A pinched walk bounds a cell that is not a simple polygon, unless it is the outer
+    // boundary of a connected part (clockwise) that lies in no cell of another part: it then
+    // bounds the unbounded face only (two cells that touch at a corner).
+    if(!walk_pinches.empty() && !(is_clockwise_walk(points, start, source, target, next) &&
+                                  !lies_in_another_part(points, edges, source(start))))
+      pinched.insert(pinched.end(), walk_pinches.begin(), walk_pinches.end());
     ++walks;
   }
   for(std::size_t e = 0; e < edges.size(); ++e)
