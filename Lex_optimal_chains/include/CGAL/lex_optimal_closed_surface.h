@@ -358,7 +358,8 @@ inside tetrahedra are split, one copy per wedge around an edge and one per umbre
 vertex, as for an infinitesimally shrunk union; their numbers are reported.
 
 \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam PolygonMesh a model of `MutableFaceGraph`
+\tparam PolygonMesh a model of `MutableFaceGraph` whose points are of the type of the input
+        points (its vertex point map is written with them)
 \param points the input points (duplicates are merged); not modified
 \param mesh the output; the surface is added to it only on success
 \param np the named parameters of `lex_optimal_closed_surface()`, and:

@@ -334,7 +334,8 @@ over Q, when the boundary winds more than once) appears once; such triangles are
 
 \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
 \tparam PolylineRange a range of ranges of `Point_3`
-\tparam PolygonMesh a model of `MutableFaceGraph`
+\tparam PolygonMesh a model of `MutableFaceGraph` whose points are of the type of the input
+        points (its vertex point map is written with them)
 \param points the input points (duplicates are merged); not modified
 \param polylines the boundary: closed polylines (last vertex equal to the first), simple and
 disjoint, each edge oriented from a vertex to the next
