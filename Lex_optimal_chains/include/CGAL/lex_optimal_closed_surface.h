@@ -30,6 +30,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -278,6 +279,8 @@ lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  static_assert(std::is_same<typename DT::Geom_traits::FT, double>::value,
+                "lex_optimal_closed_surface needs a triangulation with double coordinates (e.g. Epick)");
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   Lex_optimal_chains::Closed_surface_report report;

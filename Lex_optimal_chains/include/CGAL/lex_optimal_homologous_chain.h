@@ -24,6 +24,7 @@
 #include <functional>
 #include <iostream>
 #include <sstream>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -230,6 +231,8 @@ void optimal_chain_with_boundary(const Triangulation& dt, const EdgeRange& cycle
 template <class Triangulation, class NamedParameters, class Run>
 Open_surface_report run_on_triangulation(const Triangulation& dt, const NamedParameters& np, const Run& run)
 {
+  static_assert(std::is_same<typename Triangulation::Geom_traits::FT, double>::value,
+                "the lexicographic chains need a triangulation with double coordinates (e.g. Epick)");
   const std::function<bool(double)> callback = parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   Open_surface_report report;
