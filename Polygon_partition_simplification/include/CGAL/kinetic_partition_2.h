@@ -79,7 +79,7 @@ on nearly identical lines that cross) can get the same coordinates, and the part
 not valid (`Line_partition_2::is_valid()` says so, and `simplify_polygon_partition_2()` refuses it).
 It is not valid either when closed chains of segments touch at a point inside the rectangle
 (two squares sharing a corner): the cell around them has a hole that is not a simple polygon.
-Separating such chains by a small gap, or adding a segment through the contact point, avoids it.
+Separating such chains by a small gap avoids it.
 
 \throws Polygon_partition_simplification::Input_error when `segments` is empty
 (`EMPTY_INPUT`), has a NaN, infinite or huge coordinate (`NON_FINITE_COORDINATE`), a segment
