@@ -30,13 +30,13 @@ private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// Maps the progress of one stage to [from, to] of the user's callback.
 // Reports `progress` to the callback, if there is one; throws CANCELLED when it returns false.
 inline void report_progress(const std::function<bool(double)>& callback, double progress)
 {
   if(callback && !callback(progress)) throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
 }
 
+// Maps the progress of one stage to [from, to] of the user's callback.
 struct Stage_progress
 {
   const std::function<bool(double)>* callback;

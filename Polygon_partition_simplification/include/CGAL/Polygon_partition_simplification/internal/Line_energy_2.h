@@ -241,12 +241,6 @@ public:
   std::size_t moving_line(std::size_t m) const { return moving_[m].line; }
   const std::vector<Vector_3d>& coefficients() const { return coefficients_; }
 
-  // writes the coefficients back
-  void store(std::vector<Line_state>& lines) const
-  {
-    for(std::size_t i = 0; i < lines.size(); ++i) lines[i].coefficients = coefficients_[i];
-  }
-
 private:
   // which weight a term min(threshold, |x|) gives its derivative: 0 (constant term, or x = 0:
   // no direction), 1 (-lambda, x < 0) or 2 (+lambda, x > 0)

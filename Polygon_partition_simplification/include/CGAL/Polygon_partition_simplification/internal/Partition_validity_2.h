@@ -36,6 +36,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -113,63 +115,99 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
   return result;
 }
 
-// The facial walks of a plane graph (no crossing, distinct points): appends to `bridges` the
-// edges with the same walk on both sides and to `pinched` the edges around the points that a
-// walk passes twice (the edges in and out of both passages).
-// Whether the facial walk from half-edge `start` turns clockwise (negative area, exactly): the
-// walks of the bounded faces turn counterclockwise, the outer boundary of each connected part
-// clockwise.
+// Whether the facial walk from half-edge `start` turns clockwise (negative area): the walks of
+// the bounded faces turn counterclockwise, the outer boundary of each connected part clockwise.
+// The area is summed in double with an error bound, and again exactly when the bound does not
+// decide.
 template <class Source, class Target, class Next>
 bool is_clockwise_walk(const std::vector<std::array<double, 2>>& points, std::size_t start, const Source& source,
                        const Target& target, const Next& next)
 {
-  using FT = CGAL::Exact_rational; // twice the area, exactly (the walk is rare: only pinched ones)
   const auto& o = points[source(start)];
-  FT twice_area = 0;
+  double twice_area = 0, magnitude = 0;
+  std::size_t terms = 0;
   std::size_t h = start;
   do {
     const auto& a = points[source(h)];
     const auto& b = points[target(h)];
-    twice_area += (FT(a[0]) - o[0]) * (FT(b[1]) - o[1]) - (FT(a[1]) - o[1]) * (FT(b[0]) - o[0]);
+    const double x = (a[0] - o[0]) * (b[1] - o[1]), y = (a[1] - o[1]) * (b[0] - o[0]);
+    twice_area += x - y;
+    magnitude += std::abs(x) + std::abs(y);
+    ++terms;
     h = next(h);
   } while(h != start);
-  return CGAL::is_negative(twice_area);
+  // each product has a relative error of 3u (two differences, one product); the sum adds u per term
+  const double bound = double(terms + 4) * 4 * std::numeric_limits<double>::epsilon() * magnitude;
+  if(twice_area < -bound) return true;
+  if(twice_area > bound) return false;
+  using FT = CGAL::Exact_rational;
+  FT exact = 0;
+  h = start;
+  do {
+    const auto& a = points[source(h)];
+    const auto& b = points[target(h)];
+    exact += (FT(a[0]) - o[0]) * (FT(b[1]) - o[1]) - (FT(a[1]) - o[1]) * (FT(b[0]) - o[0]);
+    h = next(h);
+  } while(h != start);
+  return CGAL::is_negative(exact);
 }
 
-// Whether point `v` lies inside the outer boundary of a connected part of the edges that does
-// not contain it (then in one of its cells): the ray from v towards +x crosses the edges of that
-// part an odd number of times (half-open rule on y, exact orientation tests).
-inline bool lies_in_another_part(const std::vector<std::array<double, 2>>& points,
-                                 const std::vector<std::array<std::size_t, 2>>& edges, std::size_t v)
+// The connected parts of the edges (a label per point) and, for a point, whether it lies inside
+// the outer boundary of another part (then in one of its cells): the ray from it towards +x
+// crosses the edges of that part an odd number of times (half-open rule on y, exact
+// orientation tests). Built when first needed.
+class Part_containment
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  std::vector<std::size_t> parent(points.size());
-  for(std::size_t x = 0; x < parent.size(); ++x) parent[x] = x;
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for(const auto& e : edges) parent[find(e[0])] = find(e[1]);
-  const std::size_t own = find(v);
-  const K::Point_2 p(points[v][0], points[v][1]);
-  std::vector<std::size_t> crossings(points.size(), 0); // per part (indexed by its root)
-  for(const auto& e : edges) {
-    const std::size_t part = find(e[0]);
-    if(part == own) continue;
-    const auto& a = points[e[0]];
-    const auto& b = points[e[1]];
-    if((a[1] > p.y()) == (b[1] > p.y())) continue;
-    // the edge goes across the line y = p.y: does it cross it to the right of p?
-    const auto& low = a[1] < b[1] ? a : b;
-    const auto& high = a[1] < b[1] ? b : a;
-    if(CGAL::orientation(K::Point_2(low[0], low[1]), K::Point_2(high[0], high[1]), p) == CGAL::LEFT_TURN)
-      ++crossings[part];
+public:
+  Part_containment(const std::vector<std::array<double, 2>>& points, const std::vector<std::array<std::size_t, 2>>& edges)
+    : points_(points), edges_(edges), part_(points.size()), odd_(points.size(), false)
+  {
+    for(std::size_t x = 0; x < part_.size(); ++x) part_[x] = x;
+    for(const auto& e : edges) part_[find(e[0])] = find(e[1]);
+    for(std::size_t x = 0; x < part_.size(); ++x) part_[x] = find(x);
   }
-  for(std::size_t c : crossings)
-    if(c % 2 == 1) return true;
-  return false;
-}
 
+  bool lies_in_another_part(std::size_t v)
+  {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    const K::Point_2 p(points_[v][0], points_[v][1]);
+    touched_.clear();
+    for(const auto& e : edges_) {
+      const std::size_t part = part_[e[0]];
+      if(part == part_[v]) continue;
+      const auto& a = points_[e[0]];
+      const auto& b = points_[e[1]];
+      if((a[1] > p.y()) == (b[1] > p.y())) continue;
+      // the edge goes across the line y = p.y: does it cross it to the right of p?
+      const auto& low = a[1] < b[1] ? a : b;
+      const auto& high = a[1] < b[1] ? b : a;
+      if(CGAL::orientation(K::Point_2(low[0], low[1]), K::Point_2(high[0], high[1]), p) != CGAL::LEFT_TURN) continue;
+      odd_[part] = !odd_[part];
+      touched_.push_back(part);
+    }
+    bool inside = false;
+    for(std::size_t part : touched_) { inside = inside || odd_[part]; odd_[part] = false; }
+    return inside;
+  }
+
+private:
+  std::size_t find(std::size_t x)
+  {
+    while(part_[x] != x) x = part_[x] = part_[part_[x]];
+    return x;
+  }
+
+  const std::vector<std::array<double, 2>>& points_;
+  const std::vector<std::array<std::size_t, 2>>& edges_;
+  std::vector<std::size_t> part_;
+  std::vector<bool> odd_;
+  std::vector<std::size_t> touched_;
+};
+
+// The facial walks of a plane graph (no crossing, distinct points): appends to `bridges` the
+// edges with the same walk on both sides and to `pinched` the edges around the points that a
+// walk passes twice (the edges in and out of both passages), except for the walks that bound
+// only the unbounded face (two cells touching at a corner).
 inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points,
                                 const std::vector<std::array<std::size_t, 2>>& edges,
                                 std::vector<std::size_t>& bridges, std::vector<std::size_t>& pinched)
@@ -217,6 +255,7 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   std::vector<std::uint32_t> last_walk(nv, none), arrival(nv, none); // per point, in the current walk
   std::uint32_t walks = 0;
   std::vector<std::size_t> walk_pinches;
+  std::optional<Part_containment> parts; // built at the first pinched clockwise walk
   for(std::size_t start = 0; start < nh; ++start) {
     if(walk_of[start] != none) continue;
     std::size_t h = start;
@@ -236,9 +275,14 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
     // A pinched walk bounds a cell that is not a simple polygon, unless it is the outer
     // boundary of a connected part (clockwise) that lies in no cell of another part: it then
     // bounds the unbounded face only (two cells that touch at a corner).
-    if(!walk_pinches.empty() && !(is_clockwise_walk(points, start, source, target, next) &&
-                                  !lies_in_another_part(points, edges, source(start))))
-      pinched.insert(pinched.end(), walk_pinches.begin(), walk_pinches.end());
+    if(!walk_pinches.empty()) {
+      bool outer = is_clockwise_walk(points, start, source, target, next);
+      if(outer) {
+        if(!parts) parts.emplace(points, edges);
+        outer = !parts->lies_in_another_part(source(start));
+      }
+      if(!outer) pinched.insert(pinched.end(), walk_pinches.begin(), walk_pinches.end());
+    }
     ++walks;
   }
   for(std::size_t e = 0; e < edges.size(); ++e)
