@@ -461,13 +461,22 @@ private:
     std::vector<std::pair<double, double>> intervals, unions; // buffers reused from line to line
     std::vector<std::pair<Index, Index>> through;
     std::vector<std::pair<double, Index>> sorted;
+    // A point left on a single line lies on that line only, so the groups of such points
+    // joined by edges are found with one union-find over all points, line after line.
+    std::vector<Index> group(nv);
+    std::iota(group.begin(), group.end(), Index(0));
+    auto find = [&](Index x) {
+      while(group[x] != x) x = group[x] = group[group[x]];
+      return x;
+    };
     for(Index l = 0; l < nl; ++l) {
       const std::size_t first_of_line = edges.size();
-      // intervals with real points at both ends (edges to single-line points are dropped first
-      // by extending through them: a single-line point joins the intervals of its edges)
-      // (a single-line point has no coordinates of its own: it is where its edges' other ends are)
+      // Intervals with real points at both ends. A single-line point has no coordinates of its
+      // own: it lies where the chain through it goes. Single-line points joined by edges form a
+      // group (three or more lines merged in a row leave several in a row), and the real points
+      // at the ends of the group's edges bound one interval.
       intervals.clear();
-      through.clear(); // (single-line point, real point)
+      through.clear(); // (group of single-line points, real point)
       for(Index k = first_edge[l]; k < first_edge[l + 1]; ++k) {
         const auto [u, v] = line_edges[k];
         const bool ru = w_.vertex_lines[u].size() >= 2, rv = w_.vertex_lines[v].size() >= 2;
@@ -476,13 +485,19 @@ private:
           intervals.push_back({std::min(a, b), std::max(a, b)});
         } else if(ru) through.push_back({v, u});
         else if(rv) through.push_back({u, v});
+        else group[find(u)] = find(v);
       }
-      std::sort(through.begin(), through.end()); // a single-line point between two real points
-      for(std::size_t i = 0; i < through.size(); ++i)
-        for(std::size_t j = i + 1; j < through.size() && through[j].first == through[i].first; ++j) {
-          const double a = parameter(l, through[i].second), b = parameter(l, through[j].second);
-          intervals.push_back({std::min(a, b), std::max(a, b)});
+      for(auto& t : through) t.first = find(t.first);
+      std::sort(through.begin(), through.end());
+      for(std::size_t i = 0, j; i < through.size(); i = j) {
+        double lo = parameter(l, through[i].second), hi = lo;
+        for(j = i + 1; j < through.size() && through[j].first == through[i].first; ++j) {
+          const double t = parameter(l, through[j].second);
+          lo = std::min(lo, t);
+          hi = std::max(hi, t);
         }
+        if(j > i + 1) intervals.push_back({lo, hi}); // a group reached from one real point only dangles
+      }
       if(intervals.empty()) continue;
       std::sort(intervals.begin(), intervals.end());
       unions.assign(1, intervals[0]);
