@@ -620,12 +620,71 @@ void test_segment_grid()
   }
 }
 
+// The crossing test of the validity check against all pairs, decided here with other exact
+// predicates (collinearity and angles for edges sharing an end), on edges crowded in the unit
+// square and a few with an end very far away (as the points of rejected reductions can be):
+// the grid covers the crowded part only, and the far edges are tested against all the others.
+void test_crossings_with_far_points()
+{
+  using P = K::Point_2;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<std::array<double, 2>> points;
+  std::vector<std::array<std::size_t, 2>> edges;
+  auto add_point = [&](double x, double y) { points.push_back({{x, y}}); return points.size() - 1; };
+  for(int i = 0; i < 400; ++i) { // short random edges, some crossing
+    const double x = u(rng), y = u(rng);
+    const std::size_t a = add_point(x, y), b = add_point(x + 0.1 * u(rng), y + 0.1 * u(rng));
+    edges.push_back({{a, b}});
+  }
+  // far edges: across the crowd, from the crowd, and overlapping along y = x from a shared end
+  const std::size_t o = add_point(0.125, 0.125);
+  edges.push_back({{o, add_point(1e6, 1e6)}});
+  edges.push_back({{o, add_point(2e6, 2e6)}});
+  edges.push_back({{add_point(-3e7, 0.5), add_point(3e7, 0.5)}});
+  edges.push_back({{add_point(0.3, -4e6), add_point(0.3, 5e6)}});
+  edges.push_back({{add_point(0.5, 0.75), add_point(-7e5, 9e5)}});
+  edges.push_back({{add_point(5e6, 5e6), add_point(6e6, 6e6)}}); // far from everything
+  // a crowded edge overlapping another along y = x, from a shared end
+  edges.push_back({{o, add_point(0.0625, 0.0625)}});
+  edges.push_back({{add_point(-0.5, -0.5), add_point(0.015625, 0.015625)}});
+  auto meet = [&](std::size_t i, std::size_t j) {
+    const auto& e = edges[i];
+    const auto& f = edges[j];
+    auto pt = [&](std::size_t v) { return P(points[v][0], points[v][1]); };
+    std::size_t common = 0, shared = 0;
+    for(std::size_t a : e) for(std::size_t b : f) if(a == b) { ++common; shared = a; }
+    if(common == 0) return CGAL::do_intersect(K::Segment_2(pt(e[0]), pt(e[1])), K::Segment_2(pt(f[0]), pt(f[1])));
+    const P s = pt(shared), a = pt(e[0] == shared ? e[1] : e[0]), b = pt(f[0] == shared ? f[1] : f[0]);
+    return CGAL::collinear(a, s, b) && CGAL::angle(a, s, b) == CGAL::ACUTE; // overlapping
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> expected;
+  for(std::size_t i = 0; i < edges.size(); ++i)
+    for(std::size_t j = i + 1; j < edges.size(); ++j)
+      if(meet(i, j)) expected.emplace_back(i, j);
+  const auto found = PPS::internal::crossing_edge_pairs(points, edges, true, [](const auto&, const auto&) { return true; });
+  std::cout << "crossings with far points: " << found.size() << " pairs (brute force " << expected.size() << ")" << std::endl;
+  CHECK(found == expected);
+  std::size_t far_pairs = 0;
+  for(const auto& [i, j] : expected) if(i >= 400 || j >= 400) ++far_pairs;
+  CHECK(far_pairs >= 6);
+  // with some edges known free of crossings: only the pairs with a suspect are reported
+  const auto some = PPS::internal::crossing_edge_pairs(points, edges, true, [&](const auto& a, const auto&) {
+    return a[0] < 0; // the edges whose first end has x < 0
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> expected_some;
+  for(const auto& [i, j] : expected)
+    if(points[edges[i][0]][0] < 0 || points[edges[j][0]][0] < 0) expected_some.push_back({i, j});
+  CHECK(some == expected_some);
+}
+
 int main()
 {
   test_simple_configurations();
   test_validity_check();
   test_faces_against_arrangement();
   test_segment_grid();
+  test_crossings_with_far_points();
   for(unsigned seed = 1; seed <= 6; ++seed) test_kinetic_rules(random_segments(40, seed));
   for(unsigned seed = 1; seed <= 2; ++seed) test_kinetic_rules(mixed_segments(seed));
   for(unsigned seed = 1; seed <= 3; ++seed) test_kinetic_rules(projected_segments(seed));

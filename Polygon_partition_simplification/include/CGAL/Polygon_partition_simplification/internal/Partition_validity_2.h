@@ -46,6 +46,43 @@ namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
 
+// The rectangle where the grid of the crossing test is laid: twice the span between the 1st and
+// the 99th percentiles of the coordinates of the segment ends, on each axis, around their
+// middle. A round whose reductions are rejected can have a few points sent very far (two nearly
+// parallel lines); a grid over all the points would then have cells so large that nearly every
+// edge falls in the same one, and the test would take quadratic time. The few segments that
+// leave the rectangle are tested against all the others instead.
+struct Core_rectangle
+{
+  std::array<double, 2> low, high;
+
+  explicit Core_rectangle(const std::vector<std::array<double, 4>>& segments)
+  {
+    std::vector<double> values;
+    values.reserve(2 * segments.size());
+    for(int axis = 0; axis < 2; ++axis) {
+      values.clear();
+      for(const auto& s : segments) { values.push_back(s[axis]); values.push_back(s[axis + 2]); }
+      const std::size_t n = values.size(), first = (n - 1) / 100, last = n - 1 - first;
+      std::nth_element(values.begin(), values.begin() + first, values.end());
+      const double a = values[first];
+      std::nth_element(values.begin(), values.begin() + last, values.end());
+      const double b = values[last];
+      const double middle = 0.5 * (a + b), half = b - a; // twice the half span
+      low[axis] = middle - half;
+      high[axis] = middle + half;
+    }
+  }
+
+  bool contains(const std::array<double, 4>& s) const
+  {
+    for(int axis = 0; axis < 2; ++axis)
+      for(double x : {s[axis], s[axis + 2]})
+        if(!(x >= low[axis] && x <= high[axis])) return false;
+    return true;
+  }
+};
+
 // The pairs of edges (indices into `edges`: (u, v) point pairs) that meet elsewhere than at a
 // common end, among the pairs with an edge for which `may_cross(a, b)` (its ends' coordinates)
 // is true; stops at the first pair unless `all`. `points`: the coordinates (finite for the
@@ -61,14 +98,13 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
   auto point = [&](std::size_t v) { return K::Point_2(points[v][0], points[v][1]); };
   std::vector<std::array<double, 4>> segments(edges.size());
   std::vector<CGAL::Bbox_2> boxes(edges.size());
-  CGAL::Bbox_2 extent;
   for(std::size_t e = 0; e < edges.size(); ++e) {
     const auto& a = points[edges[e][0]];
     const auto& b = points[edges[e][1]];
     segments[e] = {{a[0], a[1], b[0], b[1]}};
     boxes[e] = point(edges[e][0]).bbox() + point(edges[e][1]).bbox();
-    extent += boxes[e];
   }
+  const Core_rectangle core(segments);
   // the suspects; an edge joining the same two points as another is one
   std::vector<bool> suspect(edges.size());
   {
@@ -97,20 +133,40 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
     return se.has_on(of) || sf.has_on(oe);
   };
   // Two edges that meet share a point, which lies in a cell where both are listed: each suspect
-  // is tested against the edges listed in its cells whose boxes meet its box (once per pair).
-  const Segment_grid_2 grid(segments, {{extent.xmin(), extent.ymin()}}, {{extent.xmax(), extent.ymax()}});
+  // inside the core is tested against the edges listed in its cells whose boxes meet its box
+  // (once per pair); each edge outside, against all edges.
+  std::vector<std::uint32_t> inside; // grid entry -> edge
+  std::vector<std::array<double, 4>> inside_segments;
+  std::vector<std::size_t> outside;
+  for(std::size_t e = 0; e < edges.size(); ++e) {
+    if(core.contains(segments[e])) {
+      inside.push_back(std::uint32_t(e));
+      inside_segments.push_back(segments[e]);
+    } else outside.push_back(e);
+  }
+  auto consider = [&](std::size_t i, std::size_t j) {
+    if(CGAL::do_overlap(boxes[i], boxes[j]) && test(i, j)) result.emplace_back(std::min(i, j), std::max(i, j));
+  };
+  const Segment_grid_2 grid(inside_segments, core.low, core.high);
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> seen(edges.size(), none); // the last suspect that met an edge
-  for(std::size_t i = 0; i < edges.size() && (all || result.empty()); ++i) {
+  for(std::size_t k = 0; k < inside.size() && (all || result.empty()); ++k) {
+    const std::size_t i = inside[k];
     if(!suspect[i]) continue;
     grid.for_each_cell(segments[i], [&](std::size_t cell) {
-      grid.for_each_in_cell(cell, [&](std::uint32_t j) {
+      grid.for_each_in_cell(cell, [&](std::uint32_t entry) {
+        const std::size_t j = inside[entry];
         if(j == i || seen[j] == i || (suspect[j] && j < i)) return; // a pair of suspects once
         seen[j] = i;
-        if(CGAL::do_overlap(boxes[i], boxes[j]) && (all || result.empty()) && test(i, j)) result.emplace_back(std::min<std::size_t>(i, j), std::max<std::size_t>(i, j));
+        if(all || result.empty()) consider(i, j);
       });
     });
   }
+  std::vector<bool> is_outside(edges.size(), false);
+  for(std::size_t f : outside) is_outside[f] = true;
+  for(std::size_t f : outside) // against the edges inside, and the edges outside after it (once per pair)
+    for(std::size_t j = 0; j < edges.size() && (all || result.empty()); ++j)
+      if(j != f && (suspect[f] || suspect[j]) && (!is_outside[j] || j > f)) consider(f, j);
   std::sort(result.begin(), result.end());
   return result;
 }
