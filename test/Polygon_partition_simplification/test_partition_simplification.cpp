@@ -339,6 +339,12 @@ void test_first_value_map()
       CHECK(map.insert(key, value) == expected);
     }
     CHECK(map.size() == reference.size());
+    for(std::uint64_t x = 0; x < range; ++x) // find(): stored keys and absent ones
+      for(std::uint64_t y = 0; y < range; y += 7) {
+        const std::uint64_t key = (x << 32) | y;
+        const auto it = reference.find(key);
+        CHECK(map.find(key) == (it == reference.end() ? PPS::internal::First_value_map::no_value : it->second));
+      }
     if(reference.size() > 64) ++grown;
   }
   CHECK(grown > 100); // the trials make the tables grow

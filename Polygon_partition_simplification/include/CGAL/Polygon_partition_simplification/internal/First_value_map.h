@@ -56,6 +56,15 @@ public:
     return value;
   }
 
+  static constexpr std::uint32_t no_value = std::uint32_t(-1);
+
+  // the value stored with `key`, or `no_value`
+  std::uint32_t find(std::uint64_t key) const
+  {
+    const std::size_t i = slot(key);
+    return keys_[i] == key ? values_[i] : no_value;
+  }
+
   std::size_t size() const { return count_; }
 
 private:

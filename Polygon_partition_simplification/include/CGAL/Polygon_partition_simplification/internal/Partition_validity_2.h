@@ -25,6 +25,7 @@
 // step 3 then only tests the pairs with an edge for which it is true (or that joins the same
 // two points as another edge).
 
+#include <CGAL/Polygon_partition_simplification/internal/First_value_map.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
@@ -108,15 +109,15 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
   // the suspects; an edge joining the same two points as another is one
   std::vector<bool> suspect(edges.size());
   {
-    std::vector<std::pair<std::array<std::size_t, 2>, std::size_t>> known; // (sorted ends, edge)
+    First_value_map known; // sorted ends -> the first edge known free of crossings with these ends
+    known.clear(edges.size());
     for(std::size_t e = 0; e < edges.size(); ++e) {
       suspect[e] = may_cross(points[edges[e][0]], points[edges[e][1]]);
-      if(!suspect[e])
-        known.push_back({{{std::min(edges[e][0], edges[e][1]), std::max(edges[e][0], edges[e][1])}}, e});
+      if(suspect[e]) continue;
+      const auto [u, v] = std::minmax(edges[e][0], edges[e][1]);
+      const std::size_t first = known.insert((std::uint64_t(u) << 32) | v, std::uint32_t(e)); // u < v < 2^32
+      if(first != e) suspect[first] = suspect[e] = true;
     }
-    std::sort(known.begin(), known.end());
-    for(std::size_t i = 1; i < known.size(); ++i)
-      if(known[i - 1].first == known[i].first) suspect[known[i - 1].second] = suspect[known[i].second] = true;
   }
   auto test = [&](std::size_t i, std::size_t j) {
     const auto& e = edges[i];
