@@ -496,7 +496,7 @@ private:
           lo = std::min(lo, t);
           hi = std::max(hi, t);
         }
-        if(j > i + 1) intervals.push_back({lo, hi}); // a group reached from one real point only dangles
+        if(hi > lo) intervals.push_back({lo, hi}); // a group reached from one real point only dangles
       }
       if(intervals.empty()) continue;
       std::sort(intervals.begin(), intervals.end());

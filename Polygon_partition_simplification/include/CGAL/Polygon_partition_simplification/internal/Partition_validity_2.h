@@ -52,13 +52,18 @@ namespace internal {
 // middle. A round whose reductions are rejected can have a few points sent very far (two nearly
 // parallel lines); a grid over all the points would then have cells so large that nearly every
 // edge falls in the same one, and the test would take quadratic time. The few segments that
-// leave the rectangle are tested against all the others instead.
+// leave the rectangle are not in the grid: each is tested directly against the edges it may
+// meet (all of them if it is a suspect, the suspects otherwise). Which segments are in the grid
+// only changes the cost: `contains()` decides it exactly, and any rectangle is correct (an
+// overflow in the bounds makes it infinite or empty).
 struct Core_rectangle
 {
   std::array<double, 2> low, high;
 
   explicit Core_rectangle(const std::vector<std::array<double, 4>>& segments)
   {
+    low = high = {{0, 0}};
+    if(segments.empty()) return;
     std::vector<double> values;
     values.reserve(2 * segments.size());
     for(int axis = 0; axis < 2; ++axis) {
@@ -86,8 +91,8 @@ struct Core_rectangle
 
 // The pairs of edges (indices into `edges`: (u, v) point pairs) that meet elsewhere than at a
 // common end, among the pairs with an edge for which `may_cross(a, b)` (its ends' coordinates)
-// is true; stops at the first pair unless `all`. `points`: the coordinates (finite for the
-// ends of every edge given).
+// is true; stops at a pair found (whichever the search meets first) unless `all`. `points`:
+// the coordinates (finite for the ends of every edge given).
 template <class MayCross>
 std::vector<std::pair<std::size_t, std::size_t>>
 crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
@@ -115,7 +120,9 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
       suspect[e] = may_cross(points[edges[e][0]], points[edges[e][1]]);
       if(suspect[e]) continue;
       const auto [u, v] = std::minmax(edges[e][0], edges[e][1]);
-      const std::size_t first = known.insert((std::uint64_t(u) << 32) | v, std::uint32_t(e)); // u < v < 2^32
+      // u < v (the caller checks that an edge joins two points), both below 2^32 - 1 (point
+      // indices are 32-bit numbers in this package): the key is not First_value_map::no_key
+      const std::size_t first = known.insert((std::uint64_t(u) << 32) | v, std::uint32_t(e));
       if(first != e) suspect[first] = suspect[e] = true;
     }
   }
@@ -163,11 +170,20 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
       });
     });
   }
+  // each edge outside against the edges inside and the edges outside after it (once per pair),
+  // among them only the suspects if it is not one
   std::vector<bool> is_outside(edges.size(), false);
   for(std::size_t f : outside) is_outside[f] = true;
-  for(std::size_t f : outside) // against the edges inside, and the edges outside after it (once per pair)
-    for(std::size_t j = 0; j < edges.size() && (all || result.empty()); ++j)
-      if(j != f && (suspect[f] || suspect[j]) && (!is_outside[j] || j > f)) consider(f, j);
+  std::vector<std::size_t> suspects;
+  if(!outside.empty())
+    for(std::size_t e = 0; e < edges.size(); ++e) if(suspect[e]) suspects.push_back(e);
+  for(std::size_t f : outside) {
+    auto pair_with = [&](std::size_t j) {
+      if(j != f && (!is_outside[j] || j > f) && (all || result.empty())) consider(f, j);
+    };
+    if(suspect[f]) for(std::size_t j = 0; j < edges.size(); ++j) pair_with(j);
+    else for(std::size_t j : suspects) pair_with(j);
+  }
   std::sort(result.begin(), result.end());
   return result;
 }
