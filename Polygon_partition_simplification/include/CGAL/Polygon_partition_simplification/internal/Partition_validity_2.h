@@ -142,7 +142,7 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
   };
   // Two edges that meet share a point, which lies in a cell where both are listed: each suspect
   // inside the core is tested against the edges listed in its cells whose boxes meet its box
-  // (once per pair); each edge outside, against all edges.
+  // (once per pair); each edge outside the core directly (see Core_rectangle).
   std::vector<std::uint32_t> inside; // grid entry -> edge
   std::vector<std::array<double, 4>> inside_segments;
   std::vector<std::size_t> outside;
