@@ -324,6 +324,22 @@ int main(int argc, char** argv)
     reconstruct(shuffled, m3, LOC::parameters::number_of_threads(2u));
     assert(as_off(m) == as_off(m3));
 
+    // scaled by powers of two (exactly): the same mesh and the same persistence, far beyond the
+    // range where the product of three squared lengths overflows or underflows a double
+    for(const int k : {180, -200}) {
+      std::vector<Point> scaled;
+      for(const Point& p : pts) scaled.emplace_back(std::ldexp(p.x(), k), std::ldexp(p.y(), k), std::ldexp(p.z(), k));
+      Mesh ms;
+      const LOC::Closed_surface_report rs = reconstruct(scaled, ms);
+      for(auto v : vertices(ms)) {
+        const Point& q = ms.point(v);
+        ms.point(v) = Point(std::ldexp(q.x(), -k), std::ldexp(q.y(), -k), std::ldexp(q.z(), -k));
+      }
+      std::cout << "sphere scaled by 2^" << k << ": persistence " << rs.interior_persistence << "\n";
+      assert(as_off(ms) == as_off(m));
+      assert(std::abs(rs.interior_persistence / r.interior_persistence - 1) < 1e-12);
+    }
+
     // the facet function on a user's triangulation, with an explicit interior point
     DT dt(pts.begin(), pts.end());
     std::vector<DT::Facet> facets;

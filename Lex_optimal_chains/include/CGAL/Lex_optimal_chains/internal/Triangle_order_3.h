@@ -180,7 +180,7 @@ inline Comparison_result compare_triangle_order(const Triangle_coordinates_3& s,
 // difference has relative error <= u; a sum of three squares <= 6u; the cross-product
 // component n_x = a_y b_z - a_z b_y has absolute error <= 3u(|a_y b_z| + |a_z b_y|) + u|n_x|;
 // |n|^2 then has relative error <= (2 sum |n_i| e_i + sum e_i^2) / |n|^2 + 4u; the
-// circumradius l0 l1 l2 / (4 |n|^2) adds 20u. The bounds below are doubled for safety.
+// circumradius l0 (l1 (l2 / (4 |n|^2))) adds 20u. The bounds below are doubled for safety.
 struct Approximate_radii_3
 {
   double rb2 = 0, rb_error = std::numeric_limits<double>::infinity();
@@ -213,8 +213,11 @@ inline Approximate_radii_3 approximate_radii_from_edges(double ax, double ay, do
 
   Approximate_radii_3 res;
   const bool in_range = m > 1e-250 && m < 1e250;
-  if(in_range && d > 0 && dn < 0.25 * d) {
-    res.rc2 = l0 * l1 * l2 / (4 * d);
+  // d must be a normal number well above the subnormal range (the error terms of its products
+  // are relative ones). The circumradius is computed in the order that keeps every intermediate
+  // near 1/l, 1 and l (l0 l1 l2 would overflow for coordinates beyond about 1e51).
+  if(in_range && d > 1e-290 && d < inf && dn < 0.25 * d) {
+    res.rc2 = l0 * (l1 * (l2 / (4 * d)));
     if(res.rc2 > 1e-250 && res.rc2 < 1e250) res.rc_error = 2 * (dn / d + 32 * u);
   }
   if(m > s * (1 + 64 * u)) { // certainly obtuse: m > s beyond their errors (6u, 8u)
