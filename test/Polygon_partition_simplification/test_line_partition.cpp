@@ -676,6 +676,21 @@ void test_crossings_with_far_points()
   for(const auto& [i, j] : expected)
     if(points[edges[i][0]][0] < 0 || points[edges[j][0]][0] < 0) expected_some.push_back({i, j});
   CHECK(some == expected_some);
+  // the edges known free of crossings given as a set of coordinates (inserted either way round)
+  PPS::internal::Segment_coordinate_set known(8);
+  for(std::size_t e = 0; e < edges.size(); e += 2)
+    known.insert(points[edges[e][e % 4 == 0 ? 0 : 1]], points[edges[e][e % 4 == 0 ? 1 : 0]]);
+  for(std::size_t e = 0; e < edges.size(); ++e) {
+    CHECK(known.contains(points[edges[e][0]], points[edges[e][1]]) == (e % 2 == 0));
+    CHECK(known.contains(points[edges[e][1]], points[edges[e][0]]) == (e % 2 == 0));
+  }
+  const auto odd = PPS::internal::crossing_edge_pairs(points, edges, true, [&](const auto& a, const auto& b) {
+    return !known.contains(a, b);
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> expected_odd;
+  for(const auto& [i, j] : expected)
+    if(i % 2 == 1 || j % 2 == 1) expected_odd.push_back({i, j});
+  CHECK(odd == expected_odd);
 }
 
 int main()

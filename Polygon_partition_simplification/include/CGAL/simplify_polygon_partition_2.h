@@ -6,7 +6,6 @@
 
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
-#include <CGAL/Polygon_partition_simplification/internal/First_value_map.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_energy_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Partition_reductions_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
@@ -17,8 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <functional>
 #include <string>
 #include <vector>
@@ -352,8 +349,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     // the edges that reversed), and the edges before the round, which is valid: an edge of the
     // reduced partition with the same ends (coordinates) crosses none of them.
     std::vector<signed char> orientations(start.edges.size());
-    std::vector<std::array<double, 4>> start_edges; // their points are finite
-    start_edges.reserve(start.edges.size());
+    PPS::internal::Segment_coordinate_set start_edges(start.edges.size()); // their points are finite
     {
       std::vector<std::array<double, 2>> points(start.vertex_lines.size());
       for(PPS::internal::Index v = 0; v < points.size(); ++v) points[v] = start.point(v);
@@ -362,30 +358,11 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
         const std::array<double, 2>& p = points[e[1]];
         const std::array<double, 2>& q = points[e[2]];
         orientations[i] = PPS::internal::Partition_reducer::orientation_along(start.lines[e[0]].coefficients, p, q);
-        const auto [a, b] = std::minmax(p, q);
-        start_edges.push_back({{a[0], a[1], b[0], b[1]}});
+        start_edges.insert(p, q);
       }
     }
-    // A hash set of their coordinates (by their bits; an edge whose digest another one took
-    // first is then a suspect too, which only costs a test)
-    auto digest = [](const std::array<double, 4>& s) {
-      std::uint64_t h = 0;
-      for(double c : s) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &c, sizeof bits);
-        h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
-        h ^= h >> 29;
-      }
-      return h == PPS::internal::First_value_map::no_key ? h - 1 : h;
-    };
-    PPS::internal::First_value_map start_edge_of;
-    start_edge_of.clear(start_edges.size());
-    for(std::size_t i = 0; i < start_edges.size(); ++i) start_edge_of.insert(digest(start_edges[i]), std::uint32_t(i));
     auto may_cross = [&](const std::array<double, 2>& p, const std::array<double, 2>& q) {
-      const auto [a, b] = std::minmax(p, q);
-      const std::array<double, 4> s{{a[0], a[1], b[0], b[1]}};
-      const std::uint32_t i = start_edge_of.find(digest(s));
-      return i == PPS::internal::First_value_map::no_value || start_edges[i] != s;
+      return !start_edges.contains(p, q);
     };
     std::size_t ring = 0; // how far around a defect lines are frozen (grows when freezing stalls)
     std::vector<std::vector<PPS::internal::Index>> start_line_points; // built when a ring is needed

@@ -37,6 +37,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <string>
@@ -46,6 +47,54 @@
 namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
+
+// A set of segments by the exact coordinates of their ends, either way round: the edges of a
+// valid state, which cross none of each other, for the `may_cross` of the crossing test. A
+// hash set on the bits of the coordinates; a segment whose digest another one took first is
+// reported absent, which only makes it a suspect (the test stays exact).
+class Segment_coordinate_set
+{
+public:
+  explicit Segment_coordinate_set(std::size_t expected)
+  {
+    segments_.reserve(expected);
+    map_.clear(expected);
+  }
+
+  void insert(const std::array<double, 2>& p, const std::array<double, 2>& q)
+  {
+    segments_.push_back(key(p, q));
+    map_.insert(digest(segments_.back()), std::uint32_t(segments_.size() - 1));
+  }
+
+  bool contains(const std::array<double, 2>& p, const std::array<double, 2>& q) const
+  {
+    const std::array<double, 4> s = key(p, q);
+    const std::uint32_t i = map_.find(digest(s));
+    return i != First_value_map::no_value && segments_[i] == s;
+  }
+
+private:
+  static std::array<double, 4> key(const std::array<double, 2>& p, const std::array<double, 2>& q)
+  {
+    const auto [a, b] = std::minmax(p, q);
+    return {{a[0], a[1], b[0], b[1]}};
+  }
+  static std::uint64_t digest(const std::array<double, 4>& s)
+  {
+    std::uint64_t h = 0;
+    for(double c : s) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+      h ^= h >> 29;
+    }
+    return h == First_value_map::no_key ? h - 1 : h;
+  }
+
+  std::vector<std::array<double, 4>> segments_;
+  First_value_map map_;
+};
 
 // The rectangle where the grid of the crossing test is laid: twice the span between the 1st and
 // the 99th percentiles of the coordinates of the segment ends, on each axis, around their
