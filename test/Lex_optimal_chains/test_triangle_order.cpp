@@ -5,6 +5,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Lex_optimal_chains_traits_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Largest_facets_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
 #include <CGAL/Random.h>
 
@@ -104,6 +105,67 @@ void check_fast_key(const Triangle& t)
   assert(CGAL::abs(diff) <= EK::FT(err) * EK::FT(rb2));
 }
 
+// ---- the largest facet of a cell (internal/Largest_facets_3.h) against the oracle ----------
+struct Test_vertex { Point p; const Point& point() const { return p; } };
+struct Test_cell
+{
+  std::array<Test_vertex, 4> v;
+  const Test_vertex* vertex(int i) const { return &v[i]; }
+};
+
+int largest_checked = 0;
+void check_largest_facet(const std::array<Point, 4>& p)
+{
+  for(int i = 0; i < 4; ++i)
+    for(int k = i + 1; k < 4; ++k)
+      if(p[i] == p[k]) return;
+  auto facet = [&](int j) { return Triangle{{p[(j + 1) & 3], p[(j + 2) & 3], p[(j + 3) & 3]}}; };
+  int expected = 0;
+  for(int j = 1; j < 4; ++j)
+    if(oracle_compare(facet(j), facet(expected)) == CGAL::LARGER) expected = j;
+  Test_cell c;
+  for(int i = 0; i < 4; ++i) c.v[i].p = p[i];
+  std::size_t exact = 0;
+  LI::Cell_facets_3 facets(c);
+  const int got = facets.largest(exact);
+  if(got != expected)
+    std::cerr << "LARGEST FACET MISMATCH " << p[0] << " | " << p[1] << " | " << p[2] << " | " << p[3] << ": got "
+              << got << " expected " << expected << "\n";
+  assert(got == expected);
+  ++largest_checked;
+}
+
+// Cells whose largest facets are close or exactly tied, in every vertex order: obtuse pairs on
+// a common longest edge (equal R_B, R_C decides), acute against obtuse on that edge, nearly
+// right facets, grid cells, and the same cells scaled far up and down.
+void check_largest_facets()
+{
+  auto all_orders = [](std::array<Point, 4> p) {
+    std::sort(p.begin(), p.end());
+    do check_largest_facet(p); while(std::next_permutation(p.begin(), p.end()));
+  };
+  for(int i = 0; i < 200; ++i) {
+    const double scale = std::ldexp(1.0, i % 5 == 0 ? (i % 2 ? 200 : -200) : rng.get_int(-3, 4));
+    const K::Vector_3 shift(rng.get_int(-5, 5), rng.get_int(-5, 5), rng.get_int(-5, 5));
+    auto at = [&](double x, double y, double z) { return Point(x * scale, y * scale, z * scale) + shift * scale; };
+    const double x = rng.get_double(0.2, 0.8), y = rng.get_double(-0.3, 0.3), z = rng.get_double(0.05, 0.45);
+    const double h = rng.get_double(0.3, 0.7); // the second apex: obtuse below 0.5, acute above
+    // mirror apexes (an exact tie of both radii), and one of them moved by a few ulps
+    all_orders({{at(0, 0, 0), at(1, 0, 0), at(x, y, z), at(x, y, -z)}});
+    all_orders({{at(0, 0, 0), at(1, 0, 0), at(x, y, z), nudge(at(x, y, -z), rng.get_int(-3, 4))}});
+    // a second apex nearly at the same height: close R_C, same R_B
+    all_orders({{at(0, 0, 0), at(1, 0, 0), at(x, y, z), at(x, -y, -z * (1 + rng.get_double(-1e-12, 1e-12)))}});
+    // acute or obtuse second facet on the same longest edge, and a nearly right one
+    all_orders({{at(0, 0, 0), at(1, 0, 0), at(x, y, z), at(0.5, 0, -h)}});
+    all_orders({{at(0, 0, 0), at(1, 0, 0), at(x, y, z), nudge(at(0, 0, 0.5), rng.get_int(-2, 3))}});
+    // grid cells: ties of every kind
+    auto g = [&]() { return at(rng.get_int(0, 3), rng.get_int(0, 3), rng.get_int(0, 3)); };
+    std::array<Point, 4> q{{g(), g(), g(), g()}};
+    if(!CGAL::coplanar(q[0], q[1], q[2], q[3])) all_orders(q);
+    all_orders({{at(x, y, z), at(z, x, y), at(y, z, x), at(h, h, -h)}});
+  }
+}
+
 int main()
 {
   // 1. random triangles
@@ -172,6 +234,8 @@ int main()
     check_fast_key(needle);
   }
   std::cout << checked << " comparisons agree with the exact oracle\n";
+  check_largest_facets();
+  std::cout << largest_checked << " cells: the largest facet agrees with the exact oracle\n";
 
   // 7. the dual graph of Delaunay triangulations of grids (massive exact ties) is sorted exactly
   for(int trial = 0; trial < 3; ++trial) {
@@ -208,6 +272,8 @@ int main()
     for(std::size_t i = 1; i < rec.size(); ++i)
       assert(LI::compare_triangle_order(graph.coordinates(rec[i - 1]), graph.coordinates(rec[i])) == CGAL::SMALLER);
     assert(graph.number_of_records_in_runs() > rec.size() / 10); // the runs were exercised
+    for(auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      check_largest_facet({{c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point()}});
     std::cout << "noisy sphere: " << rec.size() << " triangles sorted, " << graph.number_of_records_in_runs()
               << " in close runs, " << graph.number_of_exactly_sorted_records() << " placed by the exact comparator\n";
   }

@@ -49,6 +49,9 @@ struct Cell_facets_3
   // 0: nothing known, 1: the facet is certainly obtuse and R_B is known (`radii[j].rb2`,
   // `rb_error`, `longest`), 2: all of `radii[j]`
   int known[4] = {0, 0, 0, 0};
+  // after `classify(j)`: the facet is certainly acute (its radii may not be computed yet)
+  bool acute[4] = {false, false, false, false};
+  double longest_length[4] = {0, 0, 0, 0}; // after `classify(j)`: the largest squared edge length of facet j
 
   template <class Cell>
   explicit Cell_facets_3(const Cell& c)
@@ -70,27 +73,67 @@ struct Cell_facets_3
     return Triangle_coordinates_3{{point[(j + 1) & 3], point[(j + 2) & 3], point[(j + 3) & 3]}};
   }
 
-  // R_B of an obtuse facet from its squared edge lengths alone, as `approximate_radii()`
-  // computes it; the full radii otherwise
+  // From the squared edge lengths alone, as `approximate_radii()` decides it: whether the
+  // facet is certainly obtuse (then R_B is known) or certainly acute (R_B = R_C is computed
+  // later, if it is needed); the full radii otherwise.
   void classify(int j)
   {
-    if(known[j] > 0) return;
+    if(known[j] > 0 || acute[j]) return;
     const int p = (j + 1) & 3, q = (j + 2) & 3, r = (j + 3) & 3;
     const double l0 = length[q][r], l1 = length[p][r], l2 = length[p][q];
     int index = 0;
     double m = l0;
     if(l1 > m) { m = l1; index = 1; }
     if(l2 > m) { m = l2; index = 2; }
+    longest_length[j] = m;
     const double s = l0 + l1 + l2 - m;
     constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
+    const bool in_range = m > 1e-250 && m < 1e250;
     if(m > s * (1 + 64 * u)) {
       radii[j].longest = index;
       radii[j].rb2 = m * 0.25;
-      radii[j].rb_error = m > 1e-250 && m < 1e250 ? 16 * u : std::numeric_limits<double>::infinity();
+      radii[j].rb_error = in_range ? 16 * u : std::numeric_limits<double>::infinity();
       known[j] = 1;
+    } else if(in_range && m < s * (1 - 64 * u)) {
+      acute[j] = true;
     } else {
       compute(j);
     }
+  }
+
+  bool certainly_obtuse(int j) const { return known[j] > 0 && radii[j].longest >= 0; }
+
+  // For two certainly obtuse facets `a` and `b` whose longest edge is the same edge XY of the
+  // cell (so that their R_B are equal): -1, +1 if R_C(a) is certainly smaller, larger than
+  // R_C(b); 0 if undecided. Facet a is the triangle b X Y, obtuse at b, and
+  //   R_C(a)^2 = |XY|^2 |bX|^2 |bY|^2 / (4 |bX x bY|^2),
+  // so the comparison is that of |bX|^2 |bY|^2 |aX x aY|^2 and |aX|^2 |aY|^2 |bX x bY|^2: no
+  // division, and the error bound needs no per-component terms. Error analysis (u = 2^-53,
+  // l the squared lengths, each within 6u of its value): each component of the cross product
+  // of the rounded edges e, f is within 4.01u |e| |f| of its value, so |e x f|^2 is within
+  // 17u l_e l_f; each product below is then within 17u of itself plus 33u P, with P the
+  // product of the four squared lengths. The bound used is about twice that.
+  int compare_circumradii_of_pair(int a, int b) const
+  {
+    constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
+    int x = -1, y = -1; // the vertices of the common edge
+    for(int k = 0; k < 4; ++k)
+      if(k != a && k != b) (x < 0 ? x : y) = k;
+    const double lbx = length[b][x], lby = length[b][y], lax = length[a][x], lay = length[a][y];
+    for(const double l : {lbx, lby, lax, lay})
+      if(!(l > 1e-60 && l < 1e60)) return 0; // the products would leave the normal range
+    auto squared_cross = [this](int o, int x, int y) {
+      const double* e = edge[(std::min)(o, x)][(std::max)(o, x)]; // +-(x - o)
+      const double* f = edge[(std::min)(o, y)][(std::max)(o, y)]; // +-(y - o)
+      const double nx = e[1] * f[2] - e[2] * f[1], ny = e[2] * f[0] - e[0] * f[2], nz = e[0] * f[1] - e[1] * f[0];
+      return nx * nx + ny * ny + nz * nz;
+    };
+    const double va = (lbx * lby) * squared_cross(a, x, y); // 4 R_C(a)^2 d_a d_b / |XY|^2
+    const double vb = (lax * lay) * squared_cross(b, x, y); // 4 R_C(b)^2 d_a d_b / |XY|^2
+    const double bound = 40 * u * (va + vb) + 80 * u * ((lbx * lby) * (lax * lay));
+    if(va - vb > bound) return 1;
+    if(vb - va > bound) return -1;
+    return 0;
   }
 
   void compute(int j)
@@ -118,13 +161,26 @@ struct Cell_facets_3
     };
     classify(a);
     classify(b);
+    // An acute facet that contains the longest edge of an obtuse one, or a longer edge, is
+    // larger: its R_B is its circumradius, above half of each of its edges.
+    auto acute_wins = [this](int c, int o) {
+      return acute[c] && certainly_obtuse(o) &&
+             (opposite_longest(o) == c || longest_length[c] > longest_length[o] * (1 + 1e-12));
+    };
+    if(acute_wins(a, b)) return 1;
+    if(acute_wins(b, a)) return -1;
     int c;
     // facet a's longest edge is the cell edge without the vertices a and opposite_longest(a)
     if(opposite_longest(a) == b && opposite_longest(b) == a) {
-      compute(a);
-      compute(b);
-      c = -separated(radii[a].rc2, radii[a].rc_error, radii[b].rc2, radii[b].rc_error); // same R_B: larger R_C first
+      c = -compare_circumradii_of_pair(a, b); // same R_B: larger R_C first
+      if(c == 0) {
+        compute(a);
+        compute(b);
+        c = -separated(radii[a].rc2, radii[a].rc_error, radii[b].rc2, radii[b].rc_error);
+      }
     } else {
+      if(acute[a]) compute(a);
+      if(acute[b]) compute(b);
       c = separated(radii[a].rb2, radii[a].rb_error, radii[b].rb2, radii[b].rb_error);
     }
     if(c != 0) return c;
