@@ -80,8 +80,10 @@ public:
     for(std::uint32_t s : sinks) sink_root_ = sink_root_ == none ? sets_.find(s) : sets_.unite(sink_root_, s);
     for(std::uint32_t s : sources)
       source_root_ = source_root_ == none ? sets_.find(s) : sets_.unite(source_root_, s);
-    for(std::uint32_t c = 0; c < across_.size(); ++c)
+    for(std::uint32_t c = 0; c < across_.size(); ++c) {
+      if(c + 16 < across_.size()) sets_.prefetch(across_[c + 16]); // read at random
       if(across_[c] != c) sets_.unite(c, across_[c]);
+    }
     sets_.flatten(); // the filter below then reads one parent per cell
     sink_root_ = sets_.find(sink_root_);
     if(source_root_ != none) source_root_ = sets_.find(source_root_);

@@ -14,6 +14,7 @@
 
 #include <CGAL/Lex_optimal_chains/internal/Edge_groups.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Union_find.h>
 
@@ -89,7 +90,15 @@ public:
     // the lexicographically smallest point, so that the output does not depend on the vertex
     // order in the cells
     corners_.resize(3 * nf);
+    // the cells (in increasing address, but far apart) and then their vertices are fetched
+    // early: the reads of successive facets overlap instead of waiting one after the other
+    constexpr std::size_t cells_ahead = 16, vertices_ahead = 8;
     for(std::size_t k = 0; k < nf; ++k) {
+      if(k + cells_ahead < nf) prefetch_object(reader.cell(k + cells_ahead));
+      if(k + vertices_ahead < nf) {
+        const Cell* a = reader.cell(k + vertices_ahead);
+        for(const int i : outward_facet_vertices(reader.index(k + vertices_ahead))) prefetch_object(&*a->vertex(i));
+      }
       const Cell* c = reader.cell(k);
       const auto ov = outward_facet_vertices(reader.index(k));
       const Vertex* v[3];
