@@ -199,7 +199,9 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   std::vector<std::uint32_t> facets;
   facets.reserve(cut.size());
   for(std::size_t i = 0; i < cut.size(); ++i) {
-    if(i + 8 < cut.size()) prefetch_object(cells.element(Graph::owner_position(cut[i + 8])));
+    // the only cell read: the inside one across the facet when the owner is outside
+    if(i + 8 < cut.size() && !inside[Graph::owner_position(cut[i + 8])])
+      prefetch_object(cells.element(Graph::other_position(cut[i + 8])));
     const Dual_edge_record& r = cut[i];
     const std::uint32_t p = Graph::owner_position(r);
     const int j = Graph::facet_index(r);
@@ -207,10 +209,11 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
       facets.push_back(Closed_surface_mesh_3<Triangulation>::facet_key(p, j));
     } else {
       const auto* owner = cells.element(p);
-      const auto neighbor = owner->neighbor(j);
+      const std::uint32_t other = Graph::other_position(r); // the cell across facet j
+      const auto* neighbor = cells.element(other);
       int back = 0; // the index of the owner in its neighbor
       while(&*neighbor->neighbor(back) != owner) ++back;
-      facets.push_back(Closed_surface_mesh_3<Triangulation>::facet_key(cells.index(&*neighbor), back));
+      facets.push_back(Closed_surface_mesh_3<Triangulation>::facet_key(other, back));
     }
   }
   report.number_of_facets = facets.size();
