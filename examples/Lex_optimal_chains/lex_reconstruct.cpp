@@ -188,7 +188,7 @@ static void add_mesh_statistics(nlohmann::json& j, const Mesh& mesh)
   j["components"] = t.components;
   j["boundary_edges"] = t.border_edges;
   j["boundary_loops"] = t.border_loops;
-  j["closed"] = t.border_edges == 0;
+  j["closed"] = t.border_edges == 0 && mesh.number_of_faces() > 0;
   j["genus"] = t.genus;
 }
 
@@ -273,6 +273,11 @@ static int run_open(const std::string& input, const std::string& output, const s
   io.start();
   file.write(mesh);
   io.stop();
+  if(r.number_of_multiple_facets > 0)
+    std::cerr << "\nwarning: " << r.number_of_multiple_facets
+              << " triangles have a coefficient other than 1 or -1: over Q the boundary winds more than once "
+                 "around them (loops bounding an annulus must turn in opposite directions); --coefficients z2 "
+                 "ignores the orientations\n";
   if(json) {
     nlohmann::json j;
     add_common_statistics(j, input, output, r, io.time(), mesh);
@@ -316,7 +321,7 @@ int main(int argc, char** argv)
   open->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
   auto* b = open->add_option("--boundary", boundary_file, "closed polylines, CGAL's polylines text format");
   auto* a = open->add_flag("--auto-boundary", auto_boundary,
-                           "a polygon just outside the xy-footprint, below the lowest point (terrain tiles); implies --drop-boundary-triangles");
+                           "a polygon just outside the xy-footprint, draped at the height of the nearest points (terrain tiles); implies --drop-boundary-triangles");
   b->excludes(a);
   open->add_option("--coefficients", coefficients, "z2 (unoriented) or q (oriented, default)");
   open->add_flag("--remove-blocking-points", remove_blocking,

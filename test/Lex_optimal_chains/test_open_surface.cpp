@@ -262,6 +262,77 @@ void test_bad_input(CGAL::Random& rng)
   assert(mesh.is_empty()); // nothing was added on error
 }
 
+// Steep tiles and a tile with a low outlier, bounded by footprint_boundary() without their
+// skirt: the input points are vertices of the terrain, but for a few near the border whose
+// every triangle touches the polygon (a polygon below the lowest point left out half of the
+// 45-degree tile and all of the tile with the outlier).
+void test_footprint_of_steep_and_noisy_tiles(CGAL::Random& rng)
+{
+  auto check_tile = [](const std::vector<Point>& points, std::size_t expected_vertices, std::size_t percent,
+                       const char* what) {
+    Mesh mesh;
+    const auto report = CGAL::lex_optimal_open_surface_reconstruction(
+      points, std::vector<std::vector<Point>>{LOC::footprint_boundary(points)}, mesh,
+      LOC::parameters::drop_boundary_triangles(true));
+    std::cout << what << ": " << mesh.number_of_vertices() << " of " << points.size() << " points, "
+              << mesh.number_of_faces() << " faces, " << report.dropped_triangles << " skirt triangles dropped\n";
+    assert(CGAL::is_valid_polygon_mesh(mesh));
+    assert(mesh.number_of_vertices() <= expected_vertices && mesh.number_of_vertices() >= expected_vertices * percent / 100);
+    assert(components(mesh) == 1);
+  };
+  for(const double slope : {1.0, 2.0}) {
+    std::vector<Point> points;
+    for(int i = 0; i < 3000; ++i) {
+      const double x = rng.get_double(0, 100), y = rng.get_double(0, 100);
+      points.emplace_back(x, y, slope * x + 0.5 * std::sin(y / 7) + rng.get_double(-0.05, 0.05));
+    }
+    // the polygon is a little below the ground on the high side of a steep tile
+    check_tile(points, points.size(), slope == 1 ? 99 : 90, slope == 1 ? "tile sloping at 45 degrees" : "tile sloping at 63 degrees");
+  }
+  std::vector<Point> points = height_field(rng, 3000, 0.02);
+  points.emplace_back(5, 5, -100); // far below the ground, inside the footprint
+  check_tile(points, points.size() - 1, 99, "tile with a low outlier");
+}
+
+// Points that do not span the footprint polygon as a surface: every triangle is skirt.
+void test_no_terrain(CGAL::Random& rng)
+{
+  std::vector<Point> wall;
+  for(int i = 0; i < 500; ++i) wall.emplace_back(3, rng.get_double(0, 10), rng.get_double(0, 10));
+  const std::vector<Point> three{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0.5)};
+  for(const std::vector<Point>* points : std::vector<const std::vector<Point>*>{&wall, &three}) {
+    Mesh mesh;
+    expect_error(LOC::Input_error_code::EMPTY_RESULT, [&] {
+      CGAL::lex_optimal_open_surface_reconstruction(*points, std::vector<std::vector<Point>>{LOC::footprint_boundary(*points)},
+                                                    mesh, LOC::parameters::drop_boundary_triangles(true));
+    });
+    assert(mesh.number_of_faces() == 0);
+  }
+}
+
+// A duplicate given as (0, y, z) and (-0, y, z): the output does not depend on which comes first.
+void test_signed_zero_duplicates(CGAL::Random& rng)
+{
+  std::vector<Point> points = height_field(rng, 300, 0.02);
+  points.emplace_back(0.0, 5, 0.2);
+  points.emplace_back(-0.0, 5, 0.2);
+  const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(points)};
+  std::string first;
+  for(int order = 0; order < 2; ++order) {
+    if(order == 1) std::swap(points[points.size() - 1], points[points.size() - 2]);
+    Mesh mesh;
+    CGAL::lex_optimal_open_surface_reconstruction(points, boundary, mesh);
+    std::ostringstream out;
+    out.precision(17);
+    for(auto v : mesh.vertices()) {
+      const Point& p = mesh.point(v);
+      out << std::signbit(p.x()) << std::signbit(p.y()) << std::signbit(p.z()) << ' ' << p << '\n';
+    }
+    if(order == 0) first = out.str();
+    else assert(out.str() == first);
+  }
+}
+
 int main()
 {
   CGAL::Random rng(5);
@@ -270,6 +341,9 @@ int main()
   test_flat_tile(rng);
   test_boundary_through_the_cloud(rng);
   test_bad_input(rng);
+  test_footprint_of_steep_and_noisy_tiles(rng);
+  test_no_terrain(rng);
+  test_signed_zero_duplicates(rng);
   std::cout << "test_open_surface: OK\n";
   return 0;
 }

@@ -368,8 +368,9 @@ disjoint, each edge oriented from a vertex to the next
 `TOO_FEW_POINTS`, `DEGENERATE_POINT_SET`, `OPEN_POLYLINE` (a polyline does not end where it
 starts), `SELF_INTERSECTING_BOUNDARY` (a repeated vertex, segments that meet),
 `BOUNDARY_FAR_FROM_POINTS` (a polyline farther from the bounding box of the points than its
-diagonal), `BOUNDARY_EDGE_NOT_IN_TRIANGULATION` (the message names the edge) or
-`CANCELLED`.
+diagonal), `BOUNDARY_EDGE_NOT_IN_TRIANGULATION` (the message names the edge), `EMPTY_RESULT`
+(with `drop_boundary_triangles`, when every triangle is dropped: a vertical wall, a few
+points, no terrain) or `CANCELLED`.
 */
 template <class PointRange, class PolylineRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Open_surface_report
@@ -410,7 +411,15 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     std::set<typename Triangulation::Vertex_handle> boundary_only;
     const auto cycle = LOC::internal::insert_boundary(dt, boundary, remove, boundary_only, report.number_of_removed_points);
     report.number_of_boundary_vertices = boundary_only.size();
-    LOC::internal::check_dimension(dt);
+    try {
+      LOC::internal::check_dimension(dt);
+    } catch(const LOC::Input_error& e) {
+      if(report.number_of_removed_points == 0) throw;
+      throw LOC::Input_error(e.code(), std::string(e.what()) + ", after the removal of " +
+                                         std::to_string(report.number_of_removed_points) +
+                                         " input points that kept boundary edges out of it (remove_blocking_points): "
+                                         "the boundary passes through the cloud nearly everywhere");
+    }
     report.delaunay_seconds = watch.lap();
     if(verbose)
       std::cerr << "Lex_optimal_chains: Delaunay triangulation of " << dt.number_of_vertices() << " vertices in "
@@ -428,6 +437,13 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
       LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
     watch.lap();
     builder.finish(soup_points, soup, report.dropped_triangles);
+    if(soup.empty() && report.dropped_triangles > 0)
+      throw LOC::Input_error(LOC::Input_error_code::EMPTY_RESULT,
+                             "all " + std::to_string(report.dropped_triangles) +
+                               " triangles of the optimal surface touch a boundary vertex that is not an input "
+                               "point and were dropped (drop_boundary_triangles): the points do not span the "
+                               "boundary as a surface (for footprint_boundary(), the points must be a terrain-like "
+                               "tile, a height field over their xy-footprint)");
     report.output_seconds += watch.lap(); // after the writing of the chain into the soup
     dt.clear(); // before the mesh is built: peak memory
     report.output_seconds += watch.lap();

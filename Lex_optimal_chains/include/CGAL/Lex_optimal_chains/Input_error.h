@@ -31,7 +31,8 @@ enum class Input_error_code
   BOUNDARY_EDGE_NOT_IN_TRIANGULATION, ///< a boundary edge is not an edge of the Delaunay triangulation
   BOUNDARY_NOT_A_CYCLE,        ///< the given boundary edges do not form a cycle
   BOUNDARY_FAR_FROM_POINTS,    ///< a boundary polyline is farther from the points than their own extent
-  INVALID_CHAIN                ///< a triangle of a given chain is not a facet of the triangulation
+  INVALID_CHAIN,               ///< a triangle of a given chain is not a facet of the triangulation
+  EMPTY_RESULT                 ///< every triangle of the result was dropped (`drop_boundary_triangles`): the points do not span the boundary
 };
 
 /*!

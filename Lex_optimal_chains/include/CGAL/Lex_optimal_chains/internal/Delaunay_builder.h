@@ -26,7 +26,10 @@ namespace CGAL {
 namespace Lex_optimal_chains {
 namespace internal {
 
-// Copies the points given through `point_map`, refusing NaN and infinite coordinates.
+// Copies the points given through `point_map`, refusing NaN and infinite coordinates. A zero
+// coordinate is copied as +0: the triangulation merges duplicates and keeps the first one
+// inserted, so a point given as both (0, y, z) and (-0, y, z) would otherwise be output with
+// the sign of whichever comes first in the input.
 template <class Point, class PointRange, class PointMap>
 std::vector<Point> finite_points(const PointRange& points, const PointMap& point_map)
 {
@@ -39,7 +42,7 @@ std::vector<Point> finite_points(const PointRange& points, const PointMap& point
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       throw Input_error(Input_error_code::NON_FINITE_COORDINATE,
                         "point " + std::to_string(pts.size()) + " has a NaN or infinite coordinate");
-    pts.push_back(p);
+    pts.push_back(Point(p.x() + 0.0, p.y() + 0.0, p.z() + 0.0)); // -0 + 0 = +0, x + 0 = x otherwise
   }
   if(pts.empty()) throw Input_error(Input_error_code::EMPTY_INPUT, "no input point");
   return pts;
