@@ -230,6 +230,16 @@ void test_simple_configurations()
     std::vector<K::Segment_2> s{{{0, 0}, {2, 2}}, {{0, 2}, {2, 0}}};
     CHECK(CGAL::kinetic_partition_2(s).number_of_cells() == 4);
   }
+  // the two pieces of one wall, collinear but for the roundings of their coordinates: the
+  // smallest rectangle of their nearly flat hull has a first side that rounds to a point
+  // (its axis was NaN: a crash in GMP)
+  {
+    std::vector<K::Segment_2> s{{{0.0, 0.0}, {3.464101615137755, 1.9999999999999998}},
+                                {{5.196152422706632, 2.9999999999999996}, {8.660254037844387, 4.999999999999999}}};
+    CHECK(CGAL::kinetic_partition_2(s).is_valid());
+    s = {{{0, 0}, {1, 1}}, {{2, 2}, {3, 3.0000000000000004}}};
+    CHECK(CGAL::kinetic_partition_2(s).is_valid());
+  }
   // exactly collinear segments share one line
   {
     std::vector<K::Segment_2> s{{{0, 0}, {1, 1}}, {{3, 3}, {4, 4}}, {{0, 4}, {1, 4}}};

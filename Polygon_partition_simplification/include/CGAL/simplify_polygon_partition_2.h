@@ -152,7 +152,7 @@ and \f$\lambda'_2 = \lambda_2 \epsilon_n^2\f$: with the default \f$\epsilon_n = 
   \cgalParamNBegin{minimum_step}
     \cgalParamDescription{\f$\alpha_{min}\f$}
     \cgalParamType{`double`}
-    \cgalParamDefault{1e-9}
+    \cgalParamDefault{\f$\min(10^{-9}, \alpha_0 / 2)\f$ (\f$10^{-9}\f$ but for weights above about \f$10^6\f$)}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{largest total number of gradient steps}
@@ -200,7 +200,8 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   const double alpha0 = choose_parameter(get_parameter(np, PPS::internal_np::initial_step),
                                          std::min(0.02, 2.5e-3 / std::max({lambda1, 0.1 * lambda2, 1e-12})));
   const double ratio = choose_parameter(get_parameter(np, PPS::internal_np::step_ratio), 0.97);
-  const double alpha_min = choose_parameter(get_parameter(np, PPS::internal_np::minimum_step), 1e-9);
+  // (below the default initial step of weights above about 1e6 otherwise)
+  const double alpha_min = choose_parameter(get_parameter(np, PPS::internal_np::minimum_step), std::min(1e-9, 0.5 * alpha0));
   const std::size_t max_iterations =
     choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(100000));
   using Callback = std::function<bool(const Partition&, const PPS::Simplification_statistics&)>;

@@ -168,10 +168,9 @@ public:
   /// coordinates of point `v` in the normalized frame
   std::array<double, 2> normalized_point(std::size_t v) const
   {
-    return internal::point_of_lines(vertices_[v].lines,
-                                    [this](std::size_t l) -> const internal::Vector_3d& {
-                                      return lines_[l].coefficients;
-                                    });
+    return internal::point_of_lines(
+      vertices_[v].lines, [this](std::size_t l) -> const internal::Vector_3d& { return lines_[l].coefficients; },
+      [this](std::size_t l) { return lines_[l].is_fixed; });
   }
 
   /// coordinates of point `v` (input frame)
@@ -339,6 +338,7 @@ private:
     const Line_partition_2& p;
     std::size_t number_of_lines() const { return p.lines_.size(); }
     const internal::Vector_3d& coefficients(std::size_t l) const { return p.lines_[l].coefficients; }
+    bool is_fixed(std::size_t l) const { return p.lines_[l].is_fixed; }
     std::size_t number_of_vertices() const { return p.vertices_.size(); }
     const std::vector<std::size_t>& vertex_lines(std::size_t v) const { return p.vertices_[v].lines; }
     std::size_t number_of_edges() const { return p.edges_.size(); }

@@ -50,20 +50,27 @@ inline Enclosing_rectangle_2 enclosing_rectangle(const std::vector<std::array<do
   for(const auto& q : points) p.emplace_back(q[0], q[1]);
   CGAL::convex_hull_2(p.begin(), p.end(), std::back_inserter(hull));
   Enclosing_rectangle_2 r;
-  if(hull.size() < 3) { // collinear points: the rectangle of their segment, flat
-    const auto [lo, hi] = std::minmax_element(p.begin(), p.end());
-    const double dx = hi->x() - lo->x(), dy = hi->y() - lo->y(), n = std::hypot(dx, dy);
-    r.center = {(lo->x() + hi->x()) / 2, (lo->y() + hi->y()) / 2};
-    if(n > 0) r.axis = {dx / n, dy / n};
-    r.half_extent = {n / 2, 0};
-    return r;
+  if(hull.size() >= 3) {
+    std::vector<K::Point_2> c;
+    CGAL::min_rectangle_2(hull.begin(), hull.end(), std::back_inserter(c));
+    const double dx = c[1].x() - c[0].x(), dy = c[1].y() - c[0].y(), n = std::hypot(dx, dy);
+    const double m = std::hypot(c[2].x() - c[1].x(), c[2].y() - c[1].y());
+    // A nearly flat hull (points collinear but for the roundings of their coordinates) can
+    // give a rectangle whose first side rounds to a point (its corners are constructed in
+    // double): then it is treated as the flat case below.
+    if(n > 0 && std::isfinite(n) && std::isfinite(m)) {
+      r.axis = {dx / n, dy / n};
+      r.center = {(c[0].x() + c[2].x()) / 2, (c[0].y() + c[2].y()) / 2};
+      r.half_extent = {n / 2, m / 2};
+      return r;
+    }
   }
-  std::vector<K::Point_2> c;
-  CGAL::min_rectangle_2(hull.begin(), hull.end(), std::back_inserter(c));
-  const double dx = c[1].x() - c[0].x(), dy = c[1].y() - c[0].y(), n = std::hypot(dx, dy);
-  r.axis = {dx / n, dy / n};
-  r.center = {(c[0].x() + c[2].x()) / 2, (c[0].y() + c[2].y()) / 2};
-  r.half_extent = {n / 2, std::hypot(c[2].x() - c[1].x(), c[2].y() - c[1].y()) / 2};
+  // collinear points (or nearly): the rectangle of their extreme points, flat
+  const auto [lo, hi] = std::minmax_element(p.begin(), p.end());
+  const double dx = hi->x() - lo->x(), dy = hi->y() - lo->y(), n = std::hypot(dx, dy);
+  r.center = {(lo->x() + hi->x()) / 2, (lo->y() + hi->y()) / 2};
+  if(n > 0) r.axis = {dx / n, dy / n};
+  r.half_extent = {n / 2, 0};
   return r;
 }
 

@@ -62,13 +62,42 @@ inline double line_distance(const Vector_3d& u, const Vector_3d& v)
 }
 
 /// The point of a set of lines: their intersection for two lines, the least-squares point
-/// (minimizing the sum of squared distances to the lines) for more.
-template <class IndexRange, class LineAccess>
-std::array<double, 2> point_of_lines(const IndexRange& ids, const LineAccess& line)
+/// (minimizing the sum of squared distances to the lines) for more (lines merged at a point
+/// are not exactly concurrent). A fixed line (`is_fixed(id)`: a side of the bounding
+/// rectangle, which never moves) keeps its points: on two fixed lines the point is their
+/// intersection, on one it is the point of that line nearest to the others (least squares
+/// along it), so that the cells still tile the rectangle.
+template <class IndexRange, class LineAccess, class FixedAccess>
+std::array<double, 2> point_of_lines(const IndexRange& ids, const LineAccess& line, const FixedAccess& is_fixed)
 {
-  if(ids.size() == 2) {
-    const Vector_3d p = cross(line(ids[0]), line(ids[1]));
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  auto meet = [](const Vector_3d& u, const Vector_3d& v) -> std::array<double, 2> {
+    const Vector_3d p = cross(u, v);
     return {p[0] / p[2], p[1] / p[2]};
+  };
+  if(ids.size() == 2) return meet(line(ids[0]), line(ids[1]));
+  std::size_t fixed[2], nfixed = 0;
+  for(std::size_t i = 0; i < ids.size() && nfixed < 2; ++i)
+    if(is_fixed(ids[i])) fixed[nfixed++] = i;
+  if(nfixed == 2) return meet(line(ids[fixed[0]]), line(ids[fixed[1]]));
+  if(nfixed == 1) {
+    // p(t) = p0 + t d on the fixed line f; each other line g is at signed distance
+    // g(p0) + t g(d) (g normalized): t minimizes the sum of their squares
+    const Vector_3d& f = line(ids[fixed[0]]);
+    const double nn = f[0] * f[0] + f[1] * f[1];
+    const double p0[2] = {-f[2] * f[0] / nn, -f[2] * f[1] / nn};
+    const double d[2] = {-f[1], f[0]};
+    double sab = 0, sbb = 0;
+    for(auto id : ids) {
+      if(id == ids[fixed[0]]) continue;
+      const Vector_3d& g = line(id);
+      const double a = g[0] * p0[0] + g[1] * p0[1] + g[2], b = g[0] * d[0] + g[1] * d[1];
+      sab += a * b;
+      sbb += b * b;
+    }
+    if(sbb == 0) return {nan, nan}; // all the lines parallel
+    const double t = -sab / sbb;
+    return {p0[0] + t * d[0], p0[1] + t * d[1]};
   }
   double saa = 0, sab = 0, sbb = 0, sac = 0, sbc = 0;
   for(auto id : ids) {
@@ -77,8 +106,7 @@ std::array<double, 2> point_of_lines(const IndexRange& ids, const LineAccess& li
     sac += l[0] * l[2]; sbc += l[1] * l[2];
   }
   const double det = saa * sbb - sab * sab;
-  if(det == 0)
-    return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  if(det == 0) return {nan, nan};
   return {(-sac * sbb + sbc * sab) / det, (-sbc * saa + sac * sab) / det};
 }
 

@@ -59,9 +59,9 @@ struct Working_partition
 
   std::array<double, 2> point(Index v) const
   {
-    return point_of_lines(vertex_lines[v], [this](std::size_t l) -> const Vector_3d& {
-      return lines[l].coefficients;
-    });
+    return point_of_lines(
+      vertex_lines[v], [this](std::size_t l) -> const Vector_3d& { return lines[l].coefficients; },
+      [this](std::size_t l) { return lines[l].is_fixed; });
   }
 };
 
@@ -71,6 +71,7 @@ struct Working_partition_view
   const Working_partition& w;
   std::size_t number_of_lines() const { return w.lines.size(); }
   const Vector_3d& coefficients(std::size_t l) const { return w.lines[l].coefficients; }
+  bool is_fixed(std::size_t l) const { return w.lines[l].is_fixed; }
   std::size_t number_of_vertices() const { return w.vertex_lines.size(); }
   const Point_lines& vertex_lines(std::size_t v) const { return w.vertex_lines[v]; }
   std::size_t number_of_edges() const { return w.edges.size(); }

@@ -488,7 +488,8 @@ std::string partition_defect(const View& view, std::vector<std::size_t>* defecti
       if(report("point " + std::to_string(v) + " has fewer than two lines")) return finish(first);
       continue;
     }
-    points[v] = point_of_lines(l, [&](std::size_t x) -> const Vector_3d& { return view.coefficients(x); });
+    points[v] = point_of_lines(l, [&](std::size_t x) -> const Vector_3d& { return view.coefficients(x); },
+                               [&](std::size_t x) { return view.is_fixed(x); });
     if(!std::isfinite(points[v][0]) || !std::isfinite(points[v][1])) {
       mark(v);
       if(report("point " + std::to_string(v) + " is at infinity")) return finish(first);
