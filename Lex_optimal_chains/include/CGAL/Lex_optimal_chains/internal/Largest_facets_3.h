@@ -111,8 +111,9 @@ struct Cell_facets_3
   // division, and the error bound needs no per-component terms. Error analysis (u = 2^-53,
   // l the squared lengths, each within 6u of its value): each component of the cross product
   // of the rounded edges e, f is within 4.01u |e| |f| of its value, so |e x f|^2 is within
-  // 17u l_e l_f; each product below is then within 17u of itself plus 33u P, with P the
-  // product of the four squared lengths. The bound used is about twice that.
+  // 17u l_e l_f; each product below is then within 15u of itself plus 17u P, with P the
+  // product of the four squared lengths, and their difference within 15u (va + vb) + 34u P.
+  // The bound used is more than twice that.
   int compare_circumradii_of_pair(int a, int b) const
   {
     constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
