@@ -240,6 +240,15 @@ void test_simple_configurations()
     s = {{{0, 0}, {1, 1}}, {{2, 2}, {3, 3.0000000000000004}}};
     CHECK(CGAL::kinetic_partition_2(s).is_valid());
   }
+  // an X of the diagonals of a square: the lines pass through the corners of the box, which
+  // are rounded, and a diagonal that misses its corner by 1e-16 ended at a point with the
+  // corner's coordinates (the partition was invalid: two points coincided)
+  for(const double side : {1., 2., 3., 7., 10., 13., 100., 1e-3, 12345.6789}) {
+    std::vector<K::Segment_2> s{{{0, 0}, {side, side}}, {{0, side}, {side, 0}}};
+    Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid() && p.number_of_cells() == 4);
+    CHECK(CGAL::simplify_polygon_partition_2(p).cells_after == 4 && p.is_valid());
+  }
   // exactly collinear segments share one line
   {
     std::vector<K::Segment_2> s{{{0, 0}, {1, 1}}, {{3, 3}, {4, 4}}, {{0, 4}, {1, 4}}};

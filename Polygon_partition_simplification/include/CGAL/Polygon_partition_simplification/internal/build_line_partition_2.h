@@ -20,6 +20,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -60,6 +61,71 @@ struct Line_key
 inline Line_key key_of(const Exact_kernel::Segment_2& s)
 {
   return Line_key(Exact_kernel::Line_2(s.source(), s.target()));
+}
+
+// The points of a partition are computed in double from their lines, and two of them must
+// not coincide. Distinct exact points can round to the same coordinates: the end of a segment
+// whose line passes within a rounding error of a corner of the bounding box (whose corners
+// are rounded), next to that corner; or two intersections of nearly identical lines. Points
+// that coincide so and are joined by an edge are merged, as the collapse of that edge: the
+// merged point is on all their lines (on two sides of the box, it is the corner).
+template <class Line, class Vertex, class Edge>
+void merge_points_that_round_together(const std::vector<Line>& lines, std::vector<Vertex>& vertices,
+                                      std::vector<Edge>& edges)
+{
+  const std::size_t n = vertices.size();
+  std::vector<std::array<double, 2>> position(n);
+  for(std::size_t v = 0; v < n; ++v)
+    position[v] = point_of_lines(
+      vertices[v].lines, [&](std::size_t l) -> const Vector_3d& { return lines[l].coefficients; },
+      [&](std::size_t l) { return lines[l].is_fixed; });
+  std::vector<std::size_t> parent(n);
+  for(std::size_t v = 0; v < n; ++v) parent[v] = v;
+  auto find = [&](std::size_t v) {
+    while(parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  bool merged = false;
+  for(const Edge& e : edges)
+    if(position[e.source] == position[e.target]) {
+      const std::size_t a = find(e.source), b = find(e.target);
+      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+      merged = true;
+    }
+  if(!merged) return;
+  // the merged points keep the number of their smallest member; the others are dropped
+  std::vector<std::size_t> new_index(n, std::size_t(-1));
+  std::vector<Vertex> kept;
+  for(std::size_t v = 0; v < n; ++v)
+    if(find(v) == v) {
+      new_index[v] = kept.size();
+      kept.push_back(vertices[v]);
+    }
+  for(std::size_t v = 0; v < n; ++v)
+    if(find(v) != v) {
+      auto& l = kept[new_index[find(v)]].lines;
+      l.insert(l.end(), vertices[v].lines.begin(), vertices[v].lines.end());
+    }
+  for(Vertex& v : kept) {
+    std::sort(v.lines.begin(), v.lines.end());
+    v.lines.erase(std::unique(v.lines.begin(), v.lines.end()), v.lines.end());
+  }
+  std::vector<Edge> remaining;
+  for(Edge e : edges) {
+    e.source = new_index[find(e.source)];
+    e.target = new_index[find(e.target)];
+    if(e.source == e.target) continue; // the collapsed edge
+    if(e.source > e.target) std::swap(e.source, e.target);
+    remaining.push_back(e);
+  }
+  std::sort(remaining.begin(), remaining.end(), [](const Edge& x, const Edge& y) {
+    return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
+  });
+  remaining.erase(std::unique(remaining.begin(), remaining.end(), [](const Edge& x, const Edge& y) {
+                    return std::tie(x.line, x.source, x.target) == std::tie(y.line, y.source, y.target);
+                  }), remaining.end());
+  vertices.swap(kept);
+  edges.swap(remaining);
 }
 
 template <class GeomTraits>
@@ -211,6 +277,7 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
     throw Input_error(Input_error_code::NO_CELL,
                       "the input bounds no cell: every edge dangles; give closed polygons or "
                       "segments that meet");
+  merge_points_that_round_together(lines, vertices, edges);
 
   // Drop the lines no edge uses and number the others by decreasing spread of their segment
   // endpoints (which rigid motions and scalings do not change), then by their exact equation:
