@@ -524,6 +524,29 @@ void test_validity_check()
     const Partition p = with({{5, 4, 8}});
     CHECK(p.defect().find("off its line") != std::string::npos);
   }
+  // With the sides fixed (a kinetic partition), the cells must tile the square. The line
+  // x = -0.5 with its points on the bottom and top sides extended past the corners 0 and 3:
+  // a plane graph with two cells, the square and a strip outside it, whose edge on x = -0.5
+  // bounds the unbounded face. Valid without fixed lines, not with them.
+  {
+    std::vector<Line> fixed_lines = lines;
+    fixed_lines[4] = line(1, 0, 0.5);
+    const std::vector<Partition::Vertex> corners_and_two{{{0, 2}}, {{1, 2}}, {{1, 3}}, {{0, 3}}, {{2, 4}}, {{3, 4}}};
+    const std::vector<Partition::Edge> edges{{2, 4, 0}, {2, 0, 1}, {1, 1, 2}, {3, 2, 3}, {3, 3, 5}, {0, 3, 0}, {4, 4, 5}};
+    const Partition free_sides(Partition::Frame(), fixed_lines, corners_and_two, edges);
+    CHECK(free_sides.is_valid() && free_sides.number_of_cells() == 2);
+    for(int side = 0; side < 4; ++side) fixed_lines[side].is_fixed = true;
+    const Partition p(Partition::Frame(), fixed_lines, corners_and_two, edges);
+    CHECK(p.defect().find("tile") != std::string::npos);
+    CHECK(p.defective_edges() == std::vector<std::size_t>({6}));
+    // the valid partition in four with fixed sides stays valid
+    std::vector<Partition::Edge> four = sides;
+    for(const Partition::Edge& e : std::vector<Partition::Edge>{{4, 4, 8}, {4, 8, 5}, {5, 6, 8}, {5, 8, 7}}) four.push_back(e);
+    for(int side = 0; side < 4; ++side) fixed_lines[side].is_fixed = true;
+    std::vector<Line> fixed_square = lines;
+    for(int side = 0; side < 4; ++side) fixed_square[side].is_fixed = true;
+    CHECK(Partition(Partition::Frame(), fixed_square, points, four).is_valid());
+  }
 }
 
 // The face part of the validity check (facial walks of the rotation system) against the
@@ -533,7 +556,7 @@ void test_validity_check()
 void test_faces_against_arrangement()
 {
   using Arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<K>>;
-  std::size_t invalid = 0, total = 0;
+  std::size_t invalid = 0, total = 0, opened = 0;
   for(unsigned seed = 1; seed <= 40; ++seed) {
     const Partition full = CGAL::kinetic_partition_2(random_segments(12 + seed % 20, seed));
     std::mt19937 rng(seed);
@@ -565,7 +588,18 @@ void test_faces_against_arrangement()
     for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h)
       if(h->face() == h->twin()->face()) expected.push_back(edge_at(h));
     for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
-      if(f->is_unbounded()) continue; // pinched there, the boundary of no cell: cells touching at a corner
+      if(f->is_unbounded()) { // pinched there, the boundary of no cell: cells touching at a corner
+        // but only the sides of the rectangle may bound it
+        for(auto c = f->holes_begin(); c != f->holes_end(); ++c) {
+          auto h = *c;
+          do {
+            const std::size_t e = edge_at(h);
+            if(!p.lines()[edges[e].line].is_fixed) expected.push_back(e);
+            h = h->next();
+          } while(h != *c);
+        }
+        continue;
+      }
       std::vector<Arrangement::Halfedge_const_handle> ccbs;
       ccbs.push_back(f->outer_ccb());
       for(auto h = f->holes_begin(); h != f->holes_end(); ++h) ccbs.push_back(*h);
@@ -588,10 +622,12 @@ void test_faces_against_arrangement()
     CHECK(p.defective_edges() == expected);
     CHECK(p.is_valid() == expected.empty());
     invalid += expected.empty() ? 0 : 1;
+    opened += p.defect().find("tile") != std::string::npos ? 1 : 0; // a side removed
     ++total;
   }
-  std::cout << "faces against the arrangement: " << invalid << " invalid of " << total << std::endl;
-  CHECK(invalid >= total / 4 && invalid < total); // both verdicts were exercised
+  std::cout << "faces against the arrangement: " << invalid << " invalid of " << total << ", " << opened
+            << " with the rectangle opened" << std::endl;
+  CHECK(invalid >= total / 4 && invalid < total && opened > 0); // every verdict was exercised
 }
 
 // The grid used by the kinetic propagation and the validity check lists every segment in the

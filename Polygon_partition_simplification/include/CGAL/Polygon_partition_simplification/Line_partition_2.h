@@ -227,7 +227,9 @@ public:
   crossing, overlap, or point inside an edge), which is checked with exact predicates on
   the computed coordinates; every edge separates two different cells; the boundary of
   every cell is made of simple polygons (cells may touch at a corner: only the boundary of the
-  unbounded face, which is no cell, may pass twice through a point).
+  unbounded face, which is no cell, may pass twice through a point); when some lines are fixed
+  (the sides of the bounding rectangle of a kinetic partition), the unbounded face is bounded
+  by edges on fixed lines only, so that the cells tile the rectangle.
   */
   std::string defect() const { return analyze(nullptr); }
 

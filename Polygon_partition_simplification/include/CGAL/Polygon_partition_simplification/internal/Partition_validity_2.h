@@ -329,10 +329,16 @@ private:
 // The facial walks of a plane graph (no crossing, distinct points): appends to `bridges` the
 // edges with the same walk on both sides and to `pinched` the edges around the points that a
 // walk passes twice (the edges in and out of both passages), except for the walks that bound
-// only the unbounded face (two cells touching at a corner).
+// only the unbounded face (two cells touching at a corner). With `on_side` (per edge: whether
+// it lies on a side of the bounding rectangle of a kinetic partition; empty if there is
+// none), appends to `outside` the other edges on the boundary of the unbounded face: the
+// cells tile the rectangle exactly when there is none (a cell that went out through a side,
+// or a point on a side sent past a corner, puts its edges there, although no edges need to
+// cross).
 inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points,
                                 const std::vector<std::array<std::size_t, 2>>& edges,
-                                std::vector<std::size_t>& bridges, std::vector<std::size_t>& pinched)
+                                std::vector<std::size_t>& bridges, std::vector<std::size_t>& pinched,
+                                const std::vector<bool>& on_side = {}, std::vector<std::size_t>* outside = nullptr)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const std::size_t nv = points.size(), nh = 2 * edges.size();
@@ -409,6 +415,22 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   }
   for(std::size_t e = 0; e < edges.size(); ++e)
     if(walk_of[2 * e] == walk_of[2 * e + 1]) bridges.push_back(e);
+  if(outside == nullptr || on_side.empty()) return;
+  // The walks around the unbounded face are the clockwise walks (outer boundaries of the
+  // connected parts) in no cell of another part. Only the walks with an edge off the sides
+  // matter: the outer boundary of the rectangle has none, and every other clockwise walk (the
+  // outer boundary of a ring left inside a cell) costs a test against all edges.
+  std::vector<std::size_t> start_of(walks, std::size_t(-1));
+  for(std::size_t h = 0; h < nh; ++h)
+    if(!on_side[h / 2] && start_of[walk_of[h]] == std::size_t(-1)) start_of[walk_of[h]] = h;
+  std::vector<bool> unbounded(walks, false);
+  for(std::uint32_t k = 0; k < walks; ++k) {
+    if(start_of[k] == std::size_t(-1) || !is_clockwise_walk(points, start_of[k], source, target, next)) continue;
+    if(!parts) parts.emplace(points, edges);
+    unbounded[k] = !parts->lies_in_another_part(source(start_of[k]));
+  }
+  for(std::size_t e = 0; e < edges.size(); ++e)
+    if(!on_side[e] && (unbounded[walk_of[2 * e]] || unbounded[walk_of[2 * e + 1]])) outside->push_back(e);
 }
 
 // The number of bounded faces of a plane graph (no crossing, distinct points) with
@@ -525,8 +547,20 @@ std::string partition_defect(const View& view, std::vector<std::size_t>* defecti
     return finish("edges " + std::to_string(crossings[0].first) + " and " + std::to_string(crossings[0].second) +
                   " cross, overlap or pass through a point");
   }
-  std::vector<std::size_t> bridges, pinched;
-  facial_walk_defects(points, ends, bridges, pinched);
+  std::vector<std::size_t> bridges, pinched, outside;
+  std::vector<bool> on_side; // with fixed lines (a kinetic partition), the edges on them
+  for(std::size_t l = 0; l < nl; ++l)
+    if(view.is_fixed(l)) {
+      on_side.resize(ne);
+      for(std::size_t e = 0; e < ne; ++e) on_side[e] = view.is_fixed(view.edge(e)[0]);
+      break;
+    }
+  facial_walk_defects(points, ends, bridges, pinched, on_side, &outside);
+  if(!outside.empty()) {
+    if(defective) defective->insert(defective->end(), outside.begin(), outside.end());
+    if(report("the cells do not tile the bounding rectangle: an edge off its sides bounds the "
+              "unbounded face")) return finish(first);
+  }
   if(!bridges.empty()) {
     if(defective) defective->insert(defective->end(), bridges.begin(), bridges.end());
     if(report("an edge dangles or bridges inside a cell")) return finish(first);
