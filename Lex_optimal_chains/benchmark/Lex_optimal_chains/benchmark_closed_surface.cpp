@@ -1,9 +1,11 @@
 // Benchmark of closed surface reconstruction against CGAL's Delaunay triangulation and
 // advancing front reconstruction, on points sampled from a noisy torus.
 //
-//   benchmark_closed_surface [N ...]           runs every measurement for each N, each in a
+//   benchmark_closed_surface [N ...] [--repeat R]
+//                                              runs every measurement for each N, each in a
 //                                              fresh process (peak memory is per process),
-//                                              and prints a table with the ratios
+//                                              R times (default 1), and prints a table with
+//                                              the medians (ratios taken within a repetition)
 //   benchmark_closed_surface --one MODE N      one measurement (delaunay | lex | afsr), JSON
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -93,22 +95,38 @@ int main(int argc, char** argv)
     return 0;
   }
   std::vector<std::size_t> sizes;
-  for(int i = 1; i < argc; ++i) sizes.push_back(std::stoul(argv[i]));
+  std::size_t repeat = 1;
+  if(!parse_sizes(argc, argv, sizes, repeat)) {
+    std::cerr << "usage: " << argv[0] << " [N ...] [--repeat R]   (medians of R runs of each measurement)\n"
+              << "       " << argv[0] << " --one MODE N | --profile N\n";
+    return 2;
+  }
   if(sizes.empty()) sizes = {100000, 1000000};
   std::cout << std::fixed << std::setprecision(3)
             << "points     delaunay_s  lex_total_s  order+cut_s  (order+cut)/DT  total/DT  peakRSS_lex/DT  afsr_s  afsr/lex\n";
   for(std::size_t n : sizes) {
-    auto d = run_child(std::string(argv[0]) + " --one delaunay " + std::to_string(n));
-    auto l = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n));
-    std::map<std::string, double> a;
-    if(n <= 1000000) a = run_child(std::string(argv[0]) + " --one afsr " + std::to_string(n));
-    const double dt = d["delaunay_s"], oc = l["order_s"] + l["cut_s"];
-    std::cout << std::setw(9) << n << "  " << std::setw(10) << dt << "  " << std::setw(11) << l["total_s"] << "  "
-              << std::setw(11) << oc << "  " << std::setw(14) << oc / dt << "  " << std::setw(8) << l["total_s"] / dt
-              << "  " << std::setw(14) << l["peak_rss_mb"] / d["peak_rss_mb"] << "  ";
-    if(a.count("total_s")) std::cout << std::setw(6) << a["total_s"] << "  " << std::setw(8) << a["total_s"] / l["total_s"];
+    // the runs of one repetition follow each other: their ratios are taken before the medians
+    std::vector<std::map<std::string, double>> ds, ls, as, rs;
+    for(std::size_t k = 0; k < repeat; ++k) {
+      auto d = run_child(std::string(argv[0]) + " --one delaunay " + std::to_string(n));
+      auto l = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n));
+      std::map<std::string, double> a;
+      if(n <= 1000000) a = run_child(std::string(argv[0]) + " --one afsr " + std::to_string(n));
+      const double dt = d["delaunay_s"], oc = l["order_s"] + l["cut_s"];
+      std::map<std::string, double> r{{"order_cut_s", oc}, {"order_cut_dt", oc / dt}, {"total_dt", l["total_s"] / dt},
+                                      {"peak_dt", l["peak_rss_mb"] / d["peak_rss_mb"]}};
+      if(a.count("total_s")) r["afsr_lex"] = a["total_s"] / l["total_s"];
+      ds.push_back(d); ls.push_back(l); as.push_back(a); rs.push_back(r);
+    }
+    auto d = median(ds), l = median(ls), a = median(as), r = median(rs);
+    std::cout << std::setw(9) << n << "  " << std::setw(10) << d["delaunay_s"] << "  " << std::setw(11) << l["total_s"] << "  "
+              << std::setw(11) << r["order_cut_s"] << "  " << std::setw(14) << r["order_cut_dt"] << "  " << std::setw(8)
+              << r["total_dt"] << "  " << std::setw(14) << r["peak_dt"] << "  ";
+    if(a.count("total_s")) std::cout << std::setw(6) << a["total_s"] << "  " << std::setw(8) << r["afsr_lex"];
     else std::cout << "     -         -";
-    std::cout << "   (peak MB: DT " << d["peak_rss_mb"] << ", lex " << l["peak_rss_mb"] << ")" << std::endl;
+    std::cout << "   (peak MB: DT " << d["peak_rss_mb"] << ", lex " << l["peak_rss_mb"] << ")";
+    if(repeat > 1) std::cout << "  medians of " << repeat << " runs";
+    std::cout << std::endl;
   }
   return 0;
 }

@@ -2,8 +2,11 @@
 // noisy terrain (a smooth height field with steps like buildings, noise of 5 cm) meshed
 // with the automatic footprint boundary.
 //
-//   benchmark_open_surface [N ...]           each measurement in a fresh process (peak
-//                                            memory is per process), then a table with ratios
+//   benchmark_open_surface [N ...] [--repeat R]
+//                                            each measurement in a fresh process (peak
+//                                            memory is per process), R times (default 1),
+//                                            then a table of medians (ratios taken within a
+//                                            repetition)
 //   benchmark_open_surface --one MODE N      one measurement (delaunay | lex), JSON
 //   benchmark_open_surface --profile N       one verbose reconstruction
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -87,21 +90,36 @@ int main(int argc, char** argv)
   if(argc == 4 && std::string(argv[1]) == "--one") return one(argv[2], std::stoul(argv[3]), false);
   if(argc == 3 && std::string(argv[1]) == "--profile") return one("lex", std::stoul(argv[2]), true);
   std::vector<std::size_t> sizes;
-  for(int i = 1; i < argc; ++i) sizes.push_back(std::stoul(argv[i]));
+  std::size_t repeat = 1;
+  if(!parse_sizes(argc, argv, sizes, repeat)) {
+    std::cerr << "usage: " << argv[0] << " [N ...] [--repeat R]   (medians of R runs of each measurement)\n"
+              << "       " << argv[0] << " --one MODE N | --profile N\n";
+    return 2;
+  }
   if(sizes.empty()) sizes = {1000000, 5000000};
   std::cout << std::fixed << std::setprecision(3)
             << "points     delaunay_s  representative_s  order_s  alg10_s  optimal_chain_s  output_s  total_s"
                "  repr/DT  chain/DT  total/DT  peak_GB  peak/DT\n";
   for(std::size_t n : sizes) {
-    auto d = run_child(std::string(argv[0]) + " --one delaunay " + std::to_string(n));
-    auto l = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n));
-    const double dt = d["delaunay_s"], chain = l["order_s"] + l["algorithm10_s"];
-    std::cout << std::setw(9) << n << "  " << std::setw(10) << dt << "  " << std::setw(16) << l["representative_s"]
+    // the runs of one repetition follow each other: their ratios are taken before the medians
+    std::vector<std::map<std::string, double>> ds, ls, rs;
+    for(std::size_t k = 0; k < repeat; ++k) {
+      auto d = run_child(std::string(argv[0]) + " --one delaunay " + std::to_string(n));
+      auto l = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n));
+      const double dt = d["delaunay_s"], chain = l["order_s"] + l["algorithm10_s"];
+      rs.push_back({{"chain_s", chain}, {"repr_dt", l["representative_s"] / dt}, {"chain_dt", chain / dt},
+                    {"total_dt", l["total_s"] / dt}, {"peak_dt", l["peak_rss_mb"] / d["peak_rss_mb"]}});
+      ds.push_back(d); ls.push_back(l);
+    }
+    auto d = median(ds), l = median(ls), r = median(rs);
+    std::cout << std::setw(9) << n << "  " << std::setw(10) << d["delaunay_s"] << "  " << std::setw(16) << l["representative_s"]
               << "  " << std::setw(7) << l["order_s"] << "  " << std::setw(7) << l["algorithm10_s"] << "  "
-              << std::setw(15) << chain << "  " << std::setw(8) << l["output_s"] << "  " << std::setw(7) << l["total_s"]
-              << "  " << std::setw(7) << l["representative_s"] / dt << "  " << std::setw(8) << chain / dt << "  "
-              << std::setw(8) << l["total_s"] / dt << "  " << std::setw(7) << l["peak_rss_mb"] / 1024 << "  "
-              << std::setw(7) << l["peak_rss_mb"] / d["peak_rss_mb"] << std::endl;
+              << std::setw(15) << r["chain_s"] << "  " << std::setw(8) << l["output_s"] << "  " << std::setw(7) << l["total_s"]
+              << "  " << std::setw(7) << r["repr_dt"] << "  " << std::setw(8) << r["chain_dt"] << "  "
+              << std::setw(8) << r["total_dt"] << "  " << std::setw(7) << l["peak_rss_mb"] / 1024 << "  "
+              << std::setw(7) << r["peak_dt"];
+    if(repeat > 1) std::cout << "  medians of " << repeat << " runs";
+    std::cout << std::endl;
   }
   return 0;
 }
