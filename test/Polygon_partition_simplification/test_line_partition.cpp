@@ -748,6 +748,51 @@ void test_crossings_with_far_points()
   CHECK(odd == expected_odd);
 }
 
+// A straight wall at an angle given in pieces (a polyline with vertices on the wall, or
+// overlapping pieces), collinear only up to rounding, crossed by other walls. Its pieces are
+// moved onto one line: the partition is valid and the wall is one line. Without the move
+// (collinearity_distance 0), nearly every such scene gave an invalid partition: the check
+// fails there, which shows the scenes exercise the case.
+void test_nearly_collinear_walls()
+{
+  std::size_t invalid_without = 0, scenes = 0;
+  for(unsigned seed = 1; seed <= 20; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    const double a = 6.28 * u(rng), c = std::cos(a), sn = std::sin(a);
+    const bool chain = seed % 2 == 0;
+    std::vector<K::Segment_2> s;
+    double t = 0;
+    for(int k = 0; k < 6; ++k) { // on the line through the origin with direction (c, sn), up to rounding
+      const double t0 = chain ? t : 20 * u(rng), t1 = t0 + 1 + 5 * u(rng);
+      t = t1;
+      s.emplace_back(K::Point_2(t0 * c, t0 * sn), K::Point_2(t1 * c, t1 * sn));
+    }
+    for(int k = 0; k < 6; ++k) {
+      const double x = 30 * u(rng) - 5, y = 30 * u(rng) - 5, b = 6.28 * u(rng);
+      s.emplace_back(K::Point_2(x, y), K::Point_2(x + 8 * std::cos(b), y + 8 * std::sin(b)));
+    }
+    ++scenes;
+    invalid_without += CGAL::kinetic_partition_2(s, PPS::parameters::collinearity_distance(0.)).is_valid() ? 0 : 1;
+    Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid());
+    // the six pieces are on one line (at most 6 + 1 + 4 lines: the other walls may be collinear)
+    CHECK(p.number_of_lines() <= 6 + 1 + 4);
+    std::vector<K::Segment_2> shuffled = s;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    const Partition q = CGAL::kinetic_partition_2(shuffled);
+    CHECK(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
+          q.number_of_edges() == p.number_of_edges());
+    CGAL::simplify_polygon_partition_2(p); // a valid input is accepted
+    if(seed == 1)
+      expect_error(PPS::Input_error_code::INVALID_PARAMETER,
+                   [&] { CGAL::kinetic_partition_2(s, PPS::parameters::collinearity_distance(-1.)); });
+  }
+  std::cout << "nearly collinear walls: " << invalid_without << " of " << scenes
+            << " scenes invalid without moving the pieces onto one line" << std::endl;
+  CHECK(invalid_without >= scenes / 2);
+}
+
 int main()
 {
   test_simple_configurations();
@@ -763,6 +808,7 @@ int main()
   test_cells_and_invariance();
   test_builders();
   test_bad_input();
+  test_nearly_collinear_walls();
   std::cout << "test_line_partition: all checks passed" << std::endl;
   return 0;
 }

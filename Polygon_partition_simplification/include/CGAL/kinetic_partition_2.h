@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Kinetic_propagation_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/build_line_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/snap_collinear_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -42,7 +43,13 @@ the input coordinates.
 
 The partition's lines are the supporting lines of the segments (exactly collinear segments
 share one) and the four sides of the rectangle (marked `is_fixed`); the fidelity metric of a
-line is accumulated from the input segments on it (Eq. 3.5).
+line is accumulated from the input segments on it (Eq. 3.5). Segments that are collinear
+only up to rounding (a straight wall at an angle given in several pieces: its vertices are
+not exactly on one line in double precision) are first moved onto one line, that of the
+longest of them, with exact constructions: a segment whose two endpoints are within
+`collinearity_distance` of the line of a longer segment is projected onto it. Without this,
+the points of the partition, computed in double from nearly identical lines, made an invalid
+partition in 196 of 200 random scenes with one such wall.
 
 \tparam SegmentRange a range of `Segment_2` of a CGAL kernel `K`
 \tparam NamedParameters a sequence of named parameters
@@ -65,6 +72,15 @@ line is accumulated from the input segments on it (Eq. 3.5).
     \cgalParamType{`double`}
     \cgalParamDefault{0}
   \cgalParamNEnd
+  \cgalParamNBegin{collinearity_distance}
+    \cgalParamDescription{segments whose two endpoints are within this distance of the line of
+                          a longer segment are moved onto that line (input units); 0 keeps
+                          the segments as they are (only exactly collinear segments then share
+                          a line)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{\f$10^{-7}\f$ times the half-diagonal of the smallest enclosing rectangle
+                      of the segments}
+  \cgalParamNEnd
   \cgalParamNBegin{bounding_box_margin}
     \cgalParamDescription{margin added on each side of the enclosing rectangle, relative to its
                           half-diagonal, in [1e-6, 100]}
@@ -75,8 +91,9 @@ line is accumulated from the input segments on it (Eq. 3.5).
 
 \return the partition, in line representation. Its points are computed in double precision
 from its lines: two exact intersection points closer than the precision of doubles (segments
-on nearly identical lines that cross) can get the same coordinates, and the partition is then
-not valid (`Line_partition_2::is_valid()` says so, and `simplify_polygon_partition_2()` refuses it).
+on nearly identical lines farther apart than `collinearity_distance` that cross) can get the
+same coordinates, and the partition is then not valid (`Line_partition_2::is_valid()` says
+so, and `simplify_polygon_partition_2()` refuses it).
 It is not valid either when closed chains of segments touch at a point inside the rectangle
 (two squares sharing a corner): the cell around them has a hole that is not a simple polygon.
 Separating such chains by a small gap avoids it.
@@ -112,6 +129,11 @@ kinetic_partition_2(const SegmentRange& segments,
   if(!(crossing_distance >= 0) || !(margin >= 1e-6 && margin <= 100) || !std::isfinite(crossing_distance))
     throw Input_error(Input_error_code::INVALID_PARAMETER,
                       "crossing_distance must be finite and >= 0, bounding_box_margin in [1e-6, 100]");
+  constexpr bool default_collinearity =
+    parameters::is_default_parameter<NamedParameters, PPS::internal_np::collinearity_distance_t>::value;
+  double collinearity = choose_parameter(get_parameter(np, PPS::internal_np::collinearity_distance), 0.);
+  if(!default_collinearity && !(collinearity >= 0 && std::isfinite(collinearity)))
+    throw Input_error(Input_error_code::INVALID_PARAMETER, "collinearity_distance must be finite and >= 0");
 
   // Checks: nothing is modified, an error says which segment is wrong.
   std::vector<std::array<double, 4>> input;
@@ -157,17 +179,31 @@ kinetic_partition_2(const SegmentRange& segments,
   std::array<EK::Point_2, 4> box;
   for(int k = 0; k < 4; ++k) box[k] = EK::Point_2(corners[k][0], corners[k][1]);
 
-  std::vector<EK::Segment_2> exact_segments;
-  exact_segments.reserve(input.size());
-  for(const auto& c : input) exact_segments.emplace_back(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
+  if(default_collinearity) collinearity = 1e-7 * half_diagonal;
+  std::size_t moved = 0;
+  const std::vector<EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments(input, collinearity, moved);
+  // the propagation needs distinct segments: two moved onto the same line can coincide (the
+  // metric of their line counts both)
+  std::vector<EK::Segment_2> distinct;
+  {
+    auto canonical = [](const EK::Segment_2& s) {
+      return CGAL::compare_xy(s.source(), s.target()) == CGAL::LARGER ? s.opposite() : s;
+    };
+    for(const auto& s : exact_segments) distinct.push_back(canonical(s));
+    auto less = [](const EK::Segment_2& a, const EK::Segment_2& b) {
+      const CGAL::Comparison_result c = CGAL::compare_xy(a.source(), b.source());
+      return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xy(a.target(), b.target()) == CGAL::SMALLER);
+    };
+    std::sort(distinct.begin(), distinct.end(), less);
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  }
 
-  PPS::internal::Kinetic_propagation_2 propagation(exact_segments, box, maximum_crossings,
-                                                   crossing_distance);
+  PPS::internal::Kinetic_propagation_2 propagation(distinct, box, maximum_crossings, crossing_distance);
   propagation.run();
 
   std::vector<PPS::internal::Exact_piece> pieces;
-  pieces.reserve(input.size() + 4);
-  for(std::size_t i = 0; i < input.size(); ++i) pieces.push_back({propagation.extent(i), false});
+  pieces.reserve(distinct.size() + 4);
+  for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false});
   for(int k = 0; k < 4; ++k) pieces.push_back({EK::Segment_2(box[k], box[(k + 1) % 4]), true});
 
   PPS::internal::Enclosing_rectangle_2 framed = rectangle;

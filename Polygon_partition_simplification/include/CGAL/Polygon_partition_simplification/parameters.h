@@ -25,6 +25,7 @@ enum minimum_step_t { minimum_step };
 enum maximum_number_of_crossings_t { maximum_number_of_crossings };
 enum crossing_distance_t { crossing_distance };
 enum bounding_box_margin_t { bounding_box_margin };
+enum collinearity_distance_t { collinearity_distance };
 
 } // namespace internal_np
 
@@ -68,6 +69,9 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(maximum_number_of_crossings)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(crossing_distance)
 /// margin of the bounding rectangle of a kinetic partition, relative to its half-diagonal
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(bounding_box_margin)
+/// segments within this distance of the line of a longer one are moved onto it before a
+/// kinetic partition (input units)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(collinearity_distance)
 
 #undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER
 
