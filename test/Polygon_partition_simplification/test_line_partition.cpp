@@ -547,6 +547,33 @@ void test_validity_check()
     for(int side = 0; side < 4; ++side) fixed_square[side].is_fixed = true;
     CHECK(Partition(Partition::Frame(), fixed_square, points, four).is_valid());
   }
+  // The square with fixed sides cut by x = 0.5 and a square ring of side 0.2 centered at
+  // (cx, 0.5): in the left cell it is valid (a cell with a hole), outside the square it is
+  // not. Whether a part lies in a cell of another is decided by the parity of the crossings of
+  // a ray with the outer boundary of that part only: with all its edges, the middle edge
+  // made the ring in the left cell "outside" and the ring outside "inside".
+  {
+    std::vector<Line> ring_lines = lines;
+    for(int side = 0; side < 4; ++side) ring_lines[side].is_fixed = true;
+    const std::vector<Partition::Edge> cut_square{{2, 0, 4}, {2, 4, 1}, {1, 1, 2}, {3, 2, 5}, {3, 5, 3}, {0, 3, 0}, {4, 4, 5}};
+    for(const double cx : {0.2, -0.5}) {
+      std::vector<Line> l = ring_lines;
+      const std::size_t first_line = l.size();
+      l.push_back(line(1, 0, -(cx - 0.1)));
+      l.push_back(line(1, 0, -(cx + 0.1)));
+      l.push_back(line(0, 1, -0.4));
+      l.push_back(line(0, 1, -0.6));
+      const std::size_t x0 = first_line, x1 = first_line + 1, y0 = first_line + 2, y1 = first_line + 3;
+      const std::vector<Partition::Vertex> pts{{{0, 2}}, {{1, 2}}, {{1, 3}}, {{0, 3}}, {{2, 4}}, {{3, 4}},
+                                               {{x0, y0}}, {{x1, y0}}, {{x1, y1}}, {{x0, y1}}};
+      std::vector<Partition::Edge> e = cut_square;
+      for(const Partition::Edge& r : std::vector<Partition::Edge>{{y0, 6, 7}, {x1, 7, 8}, {y1, 8, 9}, {x0, 9, 6}}) e.push_back(r);
+      const Partition p(Partition::Frame(), l, pts, e);
+      if(cx > 0) CHECK(p.is_valid() && p.number_of_cells() == 3);
+      else CHECK(p.defect().find("tile") != std::string::npos &&
+                 p.defective_edges() == std::vector<std::size_t>({7, 8, 9, 10}));
+    }
+  }
 }
 
 // The face part of the validity check (facial walks of the rotation system) against the

@@ -115,7 +115,7 @@ public:
     std::array<double, 3> coefficients{{1, 0, 0}}; ///< (a, b, c), a^2 + b^2 = 1, normalized frame
     Line_metric metric;                             ///< fidelity metric (normalized frame)
     std::size_t number_of_segments = 0;            ///< segments accumulated in `metric`
-    bool is_fixed = false; ///< a side of the bounding rectangle of a kinetic partition: never moved nor merged
+    bool is_fixed = false; ///< a side of the bounding rectangle of a kinetic partition: never moved nor merged; when some lines are fixed, only edges on them may bound the unbounded face (see `defect()`)
   };
 
   /// A point of the partition: the sorted indices of its lines (at least two).

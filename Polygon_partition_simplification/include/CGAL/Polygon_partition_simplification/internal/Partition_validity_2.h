@@ -276,13 +276,18 @@ bool is_clockwise_walk(const std::vector<std::array<double, 2>>& points, std::si
 
 // The connected parts of the edges (a label per point) and, for a point, whether it lies inside
 // the outer boundary of another part (then in one of its cells): the ray from it towards +x
-// crosses the edges of that part an odd number of times (half-open rule on y, exact
-// orientation tests). Built when first needed.
+// crosses the outer boundary of that part an odd number of times (half-open rule on y, exact
+// orientation tests). `on_outer_boundary`: the edges with exactly one side on the outer
+// boundary (clockwise walk) of their part; the others (between two cells, or dangling, or
+// bridging, with one face on both sides) would spoil the parity: a point in the left cell of a
+// square cut in two crosses the middle edge and the right side. Built when first needed.
 class Part_containment
 {
 public:
-  Part_containment(const std::vector<std::array<double, 2>>& points, const std::vector<std::array<std::size_t, 2>>& edges)
-    : points_(points), edges_(edges), part_(points.size()), odd_(points.size(), false)
+  Part_containment(const std::vector<std::array<double, 2>>& points, const std::vector<std::array<std::size_t, 2>>& edges,
+                   std::vector<bool> on_outer_boundary)
+    : points_(points), edges_(edges), on_outer_boundary_(std::move(on_outer_boundary)), part_(points.size()),
+      odd_(points.size(), false)
   {
     for(std::size_t x = 0; x < part_.size(); ++x) part_[x] = x;
     for(const auto& e : edges) part_[find(e[0])] = find(e[1]);
@@ -294,7 +299,9 @@ public:
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     const K::Point_2 p(points_[v][0], points_[v][1]);
     touched_.clear();
-    for(const auto& e : edges_) {
+    for(std::size_t i = 0; i < edges_.size(); ++i) {
+      if(!on_outer_boundary_[i]) continue;
+      const auto& e = edges_[i];
       const std::size_t part = part_[e[0]];
       if(part == part_[v]) continue;
       const auto& a = points_[e[0]];
@@ -321,6 +328,7 @@ private:
 
   const std::vector<std::array<double, 2>>& points_;
   const std::vector<std::array<std::size_t, 2>>& edges_;
+  std::vector<bool> on_outer_boundary_;
   std::vector<std::size_t> part_;
   std::vector<bool> odd_;
   std::vector<std::size_t> touched_;
@@ -383,7 +391,8 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   std::vector<std::uint32_t> last_walk(nv, none), arrival(nv, none); // per point, in the current walk
   std::uint32_t walks = 0;
   std::vector<std::size_t> walk_pinches;
-  std::optional<Part_containment> parts; // built at the first pinched clockwise walk
+  std::vector<std::pair<std::size_t, std::vector<std::size_t>>> pinched_walks; // first half-edge, pinch edges
+  std::vector<std::size_t> walk_start;
   for(std::size_t start = 0; start < nh; ++start) {
     if(walk_of[start] != none) continue;
     std::size_t h = start;
@@ -403,15 +412,30 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
     // A pinched walk bounds a cell that is not a simple polygon, unless it is the outer
     // boundary of a connected part (clockwise) that lies in no cell of another part: it then
     // bounds the unbounded face only (two cells that touch at a corner).
-    if(!walk_pinches.empty()) {
-      bool outer = is_clockwise_walk(points, start, source, target, next);
-      if(outer) {
-        if(!parts) parts.emplace(points, edges);
-        outer = !parts->lies_in_another_part(source(start));
-      }
-      if(!outer) pinched.insert(pinched.end(), walk_pinches.begin(), walk_pinches.end());
-    }
+    if(!walk_pinches.empty()) pinched_walks.emplace_back(start, walk_pinches);
+    walk_start.push_back(start);
     ++walks;
+  }
+  // The walks that turn clockwise (outer boundaries of the connected parts), computed when
+  // first needed, and the containment test on them.
+  std::vector<signed char> clockwise(walks, -1);
+  auto is_clockwise = [&](std::uint32_t k) {
+    if(clockwise[k] < 0) clockwise[k] = is_clockwise_walk(points, walk_start[k], source, target, next) ? 1 : 0;
+    return clockwise[k] == 1;
+  };
+  std::optional<Part_containment> parts;
+  auto lies_in_another_part = [&](std::size_t v) {
+    if(!parts) {
+      std::vector<bool> on_outer_boundary(edges.size());
+      for(std::size_t e = 0; e < edges.size(); ++e)
+        on_outer_boundary[e] = is_clockwise(walk_of[2 * e]) != is_clockwise(walk_of[2 * e + 1]);
+      parts.emplace(points, edges, std::move(on_outer_boundary));
+    }
+    return parts->lies_in_another_part(v);
+  };
+  for(const auto& [start, pinches] : pinched_walks) {
+    const bool outer = is_clockwise(walk_of[start]) && !lies_in_another_part(source(start));
+    if(!outer) pinched.insert(pinched.end(), pinches.begin(), pinches.end());
   }
   for(std::size_t e = 0; e < edges.size(); ++e)
     if(walk_of[2 * e] == walk_of[2 * e + 1]) bridges.push_back(e);
@@ -424,11 +448,8 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   for(std::size_t h = 0; h < nh; ++h)
     if(!on_side[h / 2] && start_of[walk_of[h]] == std::size_t(-1)) start_of[walk_of[h]] = h;
   std::vector<bool> unbounded(walks, false);
-  for(std::uint32_t k = 0; k < walks; ++k) {
-    if(start_of[k] == std::size_t(-1) || !is_clockwise_walk(points, start_of[k], source, target, next)) continue;
-    if(!parts) parts.emplace(points, edges);
-    unbounded[k] = !parts->lies_in_another_part(source(start_of[k]));
-  }
+  for(std::uint32_t k = 0; k < walks; ++k)
+    if(start_of[k] != std::size_t(-1) && is_clockwise(k)) unbounded[k] = !lies_in_another_part(source(start_of[k]));
   for(std::size_t e = 0; e < edges.size(); ++e)
     if(!on_side[e] && (unbounded[walk_of[2 * e]] || unbounded[walk_of[2 * e + 1]])) outside->push_back(e);
 }
