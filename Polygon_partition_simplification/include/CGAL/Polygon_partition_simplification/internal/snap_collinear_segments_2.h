@@ -34,18 +34,14 @@ namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
 
-// The exact segments of `input` (x0, y0, x1, y1 each), those of a group moved onto the line
-// of its longest segment; `moved` counts the segments that were not already exactly on it.
-inline std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>
-snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double distance, std::size_t& moved)
+// For each segment of `input` (x0, y0, x1, y1 each), the index of the longest segment of its
+// group (itself for the longest; for every segment when `distance` is not positive).
+inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<double, 4>>& input, double distance)
 {
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
   const std::size_t n = input.size();
-  std::vector<EK::Segment_2> result;
-  result.reserve(n);
-  for(const auto& c : input) result.emplace_back(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
-  moved = 0;
-  if(!(distance > 0) || n < 2) return result;
+  std::vector<std::size_t> reference(n);
+  std::iota(reference.begin(), reference.end(), std::size_t(0));
+  if(!(distance > 0) || n < 2) return reference;
 
   const double pi = 3.14159265358979323846;
   std::vector<double> length(n), angle(n);
@@ -89,11 +85,27 @@ snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double 
     scan(angle[s] - window, angle[s] + window);
     if(angle[s] - window < 0) scan(angle[s] - window + pi, pi);
     if(angle[s] + window >= pi) scan(0, angle[s] + window - pi);
-    if(best == n) {
-      references.emplace(angle[s], rank);
-      continue;
-    }
-    const auto& c = input[order[best]];
+    if(best == n) references.emplace(angle[s], rank);
+    else reference[s] = order[best];
+  }
+  return reference;
+}
+
+// The exact segments of `input`, those of a group moved onto the line of its longest
+// segment (their endpoints projected on it); `moved` counts the segments that were not
+// already exactly on it.
+inline std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>
+snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double distance, std::size_t& moved)
+{
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  std::vector<EK::Segment_2> result;
+  result.reserve(input.size());
+  for(const auto& c : input) result.emplace_back(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
+  moved = 0;
+  const std::vector<std::size_t> reference = collinear_groups(input, distance);
+  for(std::size_t s = 0; s < input.size(); ++s) {
+    if(reference[s] == s) continue;
+    const auto& c = input[reference[s]];
     const EK::Line_2 line(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
     const EK::Point_2& p = result[s].source();
     const EK::Point_2& q = result[s].target();
