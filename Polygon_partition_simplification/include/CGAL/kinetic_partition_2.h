@@ -34,7 +34,9 @@ a rectangle around them, and returns it in line representation.
 
 Every segment grows from both ends at unit speed. When a growing end reaches another segment
 (its initial part or the part it has grown so far), it stops there if it arrives last; when
-both arrive at the same time, the end of the segment with the larger index stops. Growing
+both arrive at the same time, the end of the segment that comes later in the lexicographic
+order of the segments (by their smaller, then larger endpoint, exactly) stops, so the result
+does not depend on the order of the input. Growing
 ends stop at the rectangle, which is the smallest-area rectangle enclosing the segments, with
 each side moved outward by a margin (so the partition moves with the input under rigid
 motions and scalings). Intersection points and arrival times are computed exactly and
@@ -180,10 +182,9 @@ kinetic_partition_2(const SegmentRange& segments,
   for(int k = 0; k < 4; ++k) box[k] = EK::Point_2(corners[k][0], corners[k][1]);
 
   if(default_collinearity) collinearity = 1e-7 * half_diagonal;
-  std::size_t moved = 0;
-  const std::vector<EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments(input, collinearity, moved);
-  // the propagation needs distinct segments: two moved onto the same line can coincide (the
-  // metric of their line counts both)
+  const std::vector<EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments(input, collinearity);
+  // the propagation needs distinct segments (two moved onto the same line can coincide; the
+  // metric of their line counts both), in an order that does not depend on the input's
   std::vector<EK::Segment_2> distinct;
   {
     auto canonical = [](const EK::Segment_2& s) {

@@ -92,16 +92,14 @@ inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<do
 }
 
 // The exact segments of `input`, those of a group moved onto the line of its longest
-// segment (their endpoints projected on it); `moved` counts the segments that were not
-// already exactly on it.
+// segment (their endpoints projected on it).
 inline std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>
-snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double distance, std::size_t& moved)
+snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double distance)
 {
   using EK = CGAL::Exact_predicates_exact_constructions_kernel;
   std::vector<EK::Segment_2> result;
   result.reserve(input.size());
   for(const auto& c : input) result.emplace_back(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
-  moved = 0;
   const std::vector<std::size_t> reference = collinear_groups(input, distance);
   for(std::size_t s = 0; s < input.size(); ++s) {
     if(reference[s] == s) continue;
@@ -111,7 +109,6 @@ snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double 
     const EK::Point_2& q = result[s].target();
     if(line.has_on(p) && line.has_on(q)) continue;
     result[s] = EK::Segment_2(line.projection(p), line.projection(q));
-    ++moved;
   }
   return result;
 }
