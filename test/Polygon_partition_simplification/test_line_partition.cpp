@@ -542,7 +542,6 @@ void test_validity_check()
     // the valid partition in four with fixed sides stays valid
     std::vector<Partition::Edge> four = sides;
     for(const Partition::Edge& e : std::vector<Partition::Edge>{{4, 4, 8}, {4, 8, 5}, {5, 6, 8}, {5, 8, 7}}) four.push_back(e);
-    for(int side = 0; side < 4; ++side) fixed_lines[side].is_fixed = true;
     std::vector<Line> fixed_square = lines;
     for(int side = 0; side < 4; ++side) fixed_square[side].is_fixed = true;
     CHECK(Partition(Partition::Frame(), fixed_square, points, four).is_valid());

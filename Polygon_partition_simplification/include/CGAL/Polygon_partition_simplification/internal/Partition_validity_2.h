@@ -444,12 +444,12 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   // connected parts) in no cell of another part. Only the walks with an edge off the sides
   // matter: the outer boundary of the rectangle has none, and every other clockwise walk (the
   // outer boundary of a ring left inside a cell) costs a test against all edges.
-  std::vector<std::size_t> start_of(walks, std::size_t(-1));
+  std::vector<bool> off_side(walks, false); // the walks with an edge off the sides
   for(std::size_t h = 0; h < nh; ++h)
-    if(!on_side[h / 2] && start_of[walk_of[h]] == std::size_t(-1)) start_of[walk_of[h]] = h;
+    if(!on_side[h / 2]) off_side[walk_of[h]] = true;
   std::vector<bool> unbounded(walks, false);
   for(std::uint32_t k = 0; k < walks; ++k)
-    if(start_of[k] != std::size_t(-1) && is_clockwise(k)) unbounded[k] = !lies_in_another_part(source(start_of[k]));
+    if(off_side[k] && is_clockwise(k)) unbounded[k] = !lies_in_another_part(source(walk_start[k]));
   for(std::size_t e = 0; e < edges.size(); ++e)
     if(!on_side[e] && (unbounded[walk_of[2 * e]] || unbounded[walk_of[2 * e + 1]])) outside->push_back(e);
 }
