@@ -819,6 +819,53 @@ void test_nearly_collinear_walls()
   CHECK(invalid_without >= scenes / 2);
 }
 
+// The same for polygons: two rotated rectangles side by side, whose sides have vertices in
+// their middle (where a neighbour's corner is: the shared side has one from each), collinear
+// only up to rounding, and one roof side bent by 1 cm on purpose. The pieces of each straight
+// side are put back on one line, the rings stay joined (cells tile the two rectangles), the
+// bent side keeps its two lines. Without it, most scenes were invalid.
+void test_nearly_collinear_polygon_edges()
+{
+  std::size_t invalid_without = 0, scenes = 0;
+  for(unsigned seed = 1; seed <= 20; ++seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0, 1);
+    const double a = 6.28 * u(rng), c = std::cos(a), sn = std::sin(a);
+    auto at = [&](double x, double y) { return K::Point_2(x * c - y * sn, x * sn + y * c); };
+    const double t = 0.2 + 0.6 * u(rng), v = 0.2 + 0.6 * u(rng), w = 0.2 + 0.6 * u(rng);
+    std::vector<CGAL::Polygon_2<K>> rectangles(2);
+    for(const auto& [x, y] : {std::pair(0., 0.), std::pair(10 * t, 0.), std::pair(10., 0.), std::pair(10., 5 * v),
+                              std::pair(10., 5.), std::pair(5., 5.01), std::pair(0., 5.)})
+      rectangles[0].push_back(at(x, y));
+    for(const auto& [x, y] : {std::pair(10., 0.), std::pair(20., 0.), std::pair(20., 5.), std::pair(10., 5.), std::pair(10., 5 * w)})
+      rectangles[1].push_back(at(x, y));
+    ++scenes;
+    invalid_without +=
+      PPS::line_partition_from_polygons_2(rectangles, PPS::parameters::collinearity_distance(0.)).is_valid() ? 0 : 1;
+    Partition p = PPS::line_partition_from_polygons_2(rectangles);
+    CHECK(p.is_valid());
+    // y = 0, x = 0, x = 10, x = 20, y = 5 (right roof), the two halves of the bent left roof
+    CHECK(p.number_of_lines() == 7 && p.number_of_cells() == 2);
+    std::vector<Partition::Polygon_with_holes_2> cells;
+    p.cells(std::back_inserter(cells));
+    double area = 0;
+    for(const auto& cell : cells) area += cell.outer_boundary().area();
+    CHECK(std::abs(area - (rectangles[0].area() + rectangles[1].area())) < 1e-9 * area);
+    std::reverse(rectangles.begin(), rectangles.end());
+    const Partition q = PPS::line_partition_from_polygons_2(rectangles);
+    CHECK(q.number_of_lines() == 7 && q.number_of_vertices() == p.number_of_vertices() &&
+          q.number_of_edges() == p.number_of_edges());
+    CGAL::simplify_polygon_partition_2(p); // a valid input is accepted
+    if(seed == 1)
+      expect_error(PPS::Input_error_code::INVALID_PARAMETER, [&] {
+        PPS::line_partition_from_polygons_2(rectangles, PPS::parameters::collinearity_distance(-1.));
+      });
+  }
+  std::cout << "nearly collinear polygon edges: " << invalid_without << " of " << scenes
+            << " scenes invalid without moving the pieces onto one line" << std::endl;
+  CHECK(invalid_without >= scenes / 2);
+}
+
 int main()
 {
   test_simple_configurations();
@@ -835,6 +882,7 @@ int main()
   test_builders();
   test_bad_input();
   test_nearly_collinear_walls();
+  test_nearly_collinear_polygon_edges();
   std::cout << "test_line_partition: all checks passed" << std::endl;
   return 0;
 }

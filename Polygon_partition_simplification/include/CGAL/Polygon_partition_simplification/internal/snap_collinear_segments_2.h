@@ -21,6 +21,9 @@
 // l with both endpoints within d of a line makes an angle of at most asin(2 d / l) with it.
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <boost/variant/get.hpp>
 
 #include <algorithm>
 #include <array>
@@ -111,6 +114,98 @@ snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double 
     result[s] = EK::Segment_2(line.projection(p), line.projection(q));
   }
   return result;
+}
+
+// The same for the edges of polygons, whose endpoints are shared: an edge cannot be moved
+// alone without opening its ring. A vertex is moved instead, onto the line of the group of each
+// edge it bounds: the projection on the one such line, or the intersection of two. When that
+// is not possible (three lines, or two whose intersection is farther than 4 `distance` from
+// the vertex: two walls that meet at a very flat angle), the groups of the edges at that
+// vertex are dissolved (their edges keep their own lines) and the placement is done again,
+// until every vertex is placed. Vertices are identified by their exact coordinates: rings that share a vertex stay
+// joined. Returns the number of edges moved onto the line of another; edges reduced to a point
+// are removed.
+inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>& edges,
+                                        double distance)
+{
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  std::vector<std::array<double, 4>> input;
+  input.reserve(edges.size());
+  for(const auto& e : edges)
+    input.push_back({CGAL::to_double(e.source().x()), CGAL::to_double(e.source().y()),
+                     CGAL::to_double(e.target().x()), CGAL::to_double(e.target().y())});
+  std::vector<std::size_t> reference = collinear_groups(input, distance);
+  const std::size_t n = edges.size();
+
+  // the vertices, and the edges at each
+  std::map<EK::Point_2, std::size_t> vertex_index;
+  std::vector<EK::Point_2> vertices;
+  std::vector<std::array<std::size_t, 2>> ends(n);
+  for(std::size_t e = 0; e < n; ++e)
+    for(int k = 0; k < 2; ++k) {
+      const EK::Point_2& p = k == 0 ? edges[e].source() : edges[e].target();
+      auto [it, inserted] = vertex_index.emplace(p, vertices.size());
+      if(inserted) vertices.push_back(p);
+      ends[e][k] = it->second;
+    }
+  std::vector<std::vector<std::size_t>> incident(vertices.size());
+  for(std::size_t e = 0; e < n; ++e)
+    for(std::size_t v : ends[e]) incident[v].push_back(e);
+
+  std::vector<EK::Point_2> placed;
+  for(;;) {
+    // a group of one edge leaves its edge where it is
+    std::vector<std::size_t> members(n, 0);
+    for(std::size_t e = 0; e < n; ++e) ++members[reference[e]];
+    auto group_of = [&](std::size_t e) { return members[reference[e]] > 1 ? reference[e] : n; };
+    placed = vertices;
+    bool all_placed = true;
+    std::vector<bool> dissolved(n, false);
+    for(std::size_t v = 0; v < vertices.size(); ++v) {
+      std::vector<std::size_t> groups;
+      for(std::size_t e : incident[v])
+        if(group_of(e) != n) groups.push_back(group_of(e));
+      std::sort(groups.begin(), groups.end());
+      groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+      if(groups.empty()) continue;
+      auto line_of = [&](std::size_t r) {
+        const auto& c = input[r];
+        return EK::Line_2(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
+      };
+      bool ok = false;
+      if(groups.size() == 1) {
+        const EK::Line_2 l = line_of(groups[0]);
+        if(!l.has_on(vertices[v])) placed[v] = l.projection(vertices[v]);
+        ok = true;
+      } else if(groups.size() == 2) {
+        const auto x = CGAL::intersection(line_of(groups[0]), line_of(groups[1]));
+        if(x) {
+          if(const EK::Point_2* p = boost::get<EK::Point_2>(&*x)) {
+            const double d2 = CGAL::to_double(CGAL::squared_distance(*p, vertices[v]));
+            if(d2 <= 16 * distance * distance) { placed[v] = *p; ok = true; }
+          }
+        }
+      }
+      if(!ok) { // the groups at v are dissolved
+        all_placed = false;
+        for(std::size_t e : incident[v]) dissolved[reference[e]] = true;
+      }
+    }
+    if(all_placed) break;
+    for(std::size_t f = 0; f < n; ++f)
+      if(dissolved[reference[f]]) reference[f] = f;
+  }
+  std::size_t moved = 0;
+  std::vector<EK::Segment_2> result;
+  result.reserve(n);
+  for(std::size_t e = 0; e < n; ++e) {
+    if(reference[e] != e) ++moved;
+    const EK::Point_2& p = placed[ends[e][0]];
+    const EK::Point_2& q = placed[ends[e][1]];
+    if(p != q) result.emplace_back(p, q);
+  }
+  edges.swap(result);
+  return moved;
 }
 
 } // namespace internal
