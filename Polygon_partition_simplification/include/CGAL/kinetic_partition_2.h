@@ -182,36 +182,45 @@ kinetic_partition_2(const SegmentRange& segments,
   for(int k = 0; k < 4; ++k) box[k] = EK::Point_2(corners[k][0], corners[k][1]);
 
   if(default_collinearity) collinearity = 1e-7 * half_diagonal;
-  const std::vector<EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments(input, collinearity);
+  // every segment is on the line of its group's reference segment, given by its two double
+  // endpoints (which spares the exact evaluation of the extents' ends to identify lines)
+  const std::vector<std::size_t> reference = PPS::internal::collinear_groups(input, collinearity);
+  const std::vector<EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments(input, reference);
+  std::vector<PPS::internal::Exact_piece> metric_segments;
+  for(std::size_t i = 0; i < input.size(); ++i) metric_segments.push_back({exact_segments[i], false, reference[i]});
   // the propagation needs distinct segments (two moved onto the same line can coincide; the
   // metric of their line counts both), in an order that does not depend on the input's
-  std::vector<EK::Segment_2> distinct;
+  std::vector<std::pair<EK::Segment_2, std::size_t>> distinct; // with the group
   {
     auto canonical = [](const EK::Segment_2& s) {
       return CGAL::compare_xy(s.source(), s.target()) == CGAL::LARGER ? s.opposite() : s;
     };
-    for(const auto& s : exact_segments) distinct.push_back(canonical(s));
-    auto less = [](const EK::Segment_2& a, const EK::Segment_2& b) {
-      const CGAL::Comparison_result c = CGAL::compare_xy(a.source(), b.source());
-      return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xy(a.target(), b.target()) == CGAL::SMALLER);
+    for(std::size_t i = 0; i < input.size(); ++i) distinct.emplace_back(canonical(exact_segments[i]), reference[i]);
+    auto less = [](const auto& a, const auto& b) {
+      const CGAL::Comparison_result c = CGAL::compare_xy(a.first.source(), b.first.source());
+      return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xy(a.first.target(), b.first.target()) == CGAL::SMALLER);
     };
     std::sort(distinct.begin(), distinct.end(), less);
-    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end(),
+                               [](const auto& a, const auto& b) { return a.first == b.first; }),
+                   distinct.end());
   }
+  std::vector<EK::Segment_2> distinct_segments;
+  for(const auto& d : distinct) distinct_segments.push_back(d.first);
 
-  PPS::internal::Kinetic_propagation_2 propagation(distinct, box, maximum_crossings, crossing_distance);
+  PPS::internal::Kinetic_propagation_2 propagation(distinct_segments, box, maximum_crossings, crossing_distance);
   propagation.run();
 
   std::vector<PPS::internal::Exact_piece> pieces;
   pieces.reserve(distinct.size() + 4);
-  for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false});
+  for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false, distinct[i].second});
   for(int k = 0; k < 4; ++k) pieces.push_back({EK::Segment_2(box[k], box[(k + 1) % 4]), true});
 
   PPS::internal::Enclosing_rectangle_2 framed = rectangle;
   framed.half_extent = {rectangle.half_extent[0] + margin * half_diagonal,
                         rectangle.half_extent[1] + margin * half_diagonal};
   return PPS::internal::build_line_partition<K>(
-    pieces, exact_segments, PPS::internal::frame_of<typename Partition::Frame>(framed));
+    pieces, metric_segments, PPS::internal::frame_of<typename Partition::Frame>(framed), input);
 }
 
 } // namespace CGAL

@@ -29,6 +29,9 @@
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <boost/variant/get.hpp>
 
 #include <algorithm>
 #include <array>
@@ -112,12 +115,13 @@ public:
         std::sqrt(CGAL::to_double(ray.direction.squared_length()));
       // exit parameter through the rectangle: the smallest positive one over its sides
       bool found = false;
-      for(const auto& side : box_) {
+      for(int k = 0; k < 4; ++k) {
+        const EK::Line_2& side = box_[k];
         const FT den = side.a() * ray.direction.x() + side.b() * ray.direction.y();
         // the inside is on the left of a counterclockwise side: leaving it means den < 0
         if(CGAL::sign(den) != CGAL::NEGATIVE) continue;
         const FT t = -(side.a() * ray.origin.x() + side.b() * ray.origin.y() + side.c()) / den;
-        if(!found || t < ray.box_parameter) { ray.box_parameter = t; found = true; }
+        if(!found || t < ray.box_parameter) { ray.box_parameter = t; ray.box_side = k; found = true; }
       }
       CGAL_assertion(found);
       ray.box_parameter_double = CGAL::to_double(ray.box_parameter);
@@ -164,6 +168,7 @@ private:
     EK::Vector_2 direction;
     double direction_length = 0;
     FT box_parameter;
+    int box_side = 0; // the side of the rectangle at `box_parameter`
     double box_parameter_double = 0;
     std::vector<Candidate> candidates; // current batch, sorted, from `cursor` on
     std::size_t cursor = 0;
@@ -345,6 +350,20 @@ private:
     }
   }
 
+  // The point where ray r meets the line of `segment` (or the rectangle), which is
+  // origin + head_parameter * direction, built as the intersection of two lines: one
+  // construction in the lazy kernel, whose exact evaluation (by the arrangement of the extents,
+  // at every T-junction) is one step from the exact lines, instead of a chain of a dozen
+  // arithmetic operations, each of which was evaluated and synchronized on its own.
+  Point meeting_point(std::size_t r, std::uint32_t segment) const
+  {
+    const EK::Line_2& other = segment == box_candidate ? box_[rays_[r].box_side] : lines_[segment];
+    const auto x = CGAL::intersection(lines_[r / 2], other);
+    const Point* p = x ? boost::get<Point>(&*x) : nullptr;
+    CGAL_assertion(p != nullptr); // parallel candidates are skipped
+    return *p;
+  }
+
   bool is_parallel(std::size_t ray, std::uint32_t segment) const
   {
     return parallel_class_[segment] == parallel_class_[ray / 2];
@@ -377,7 +396,7 @@ private:
     ray.last = std::max(ray.last, head);
     ++ray.cursor;
     ++statistics_.events;
-    const Point I = ray.origin + ray.head_parameter * ray.direction;
+    const Point I = meeting_point(r, head.segment);
     bool stop = head.segment == box_candidate;
     if(!stop) {
       const FT t2 = ray.head_parameter * ray.head_parameter * ray.direction.squared_length();

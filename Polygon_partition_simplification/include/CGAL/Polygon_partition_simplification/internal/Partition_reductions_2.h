@@ -290,9 +290,17 @@ private:
   }
 
   // Merges the classes of points u and v if all their points are within `bound` of each other
-  // (complete linkage: a ring of short edges does not collapse into one point at once).
+  // (complete linkage: a ring of short edges does not collapse into one point at once), unless
+  // every line through u and v is kept still: around a defect of a previous attempt, the
+  // partition must be that of the start of the round (merging the ends of a short edge there
+  // left a defect that no freezing could remove, and the whole simplification stopped).
   bool merge_close_points(Index u, Index v, const std::vector<std::array<double, 2>>& points, double bound)
   {
+    auto still = [&](Index x) {
+      return std::all_of(w_.vertex_lines[x].begin(), w_.vertex_lines[x].end(),
+                         [&](Index l) { return w_.lines[l].is_still(); });
+    };
+    if(still(u) && still(v)) return false;
     const Index ru = find_vertex(u), rv = find_vertex(v);
     if(ru == rv) return false;
     auto& cu = vertex_members_[ru];

@@ -21,6 +21,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -35,6 +38,9 @@ struct Exact_piece
 {
   Exact_kernel::Segment_2 segment;
   bool is_fixed = false; // a side of a kinetic bounding box
+  // When known, the index of the piece's line among the lines given to
+  // build_line_partition() (`group_lines`): pieces with the same index are on that line.
+  std::size_t line_group = std::size_t(-1);
 };
 
 // Exact canonical form of a line: (1, b/a, c/a) when a != 0, else (0, 1, c/b).
@@ -57,6 +63,29 @@ struct Line_key
     return CGAL::compare(v, o.v) == CGAL::SMALLER;
   }
 };
+
+// The double nearest to an exact number (ties to even). `CGAL::to_double()` of a lazy number
+// returns the middle of its interval when that is narrow enough, and the interval depends on
+// how the number was built and on whether its exact value was needed before; the conversion
+// of the exact value rounds as its number type does (GMP's mpq truncates). The partition must
+// not depend on either: the same input gave different simplifications in two builds.
+inline double double_of(const Exact_kernel::FT& x)
+{
+  const auto& i = x.approx();
+  if(i.inf() == i.sup()) return i.inf();
+  using ET = Exact_kernel::FT::ET;
+  const ET& e = x.exact();
+  const double d = CGAL::to_double(e); // within one unit in the last place of e
+  const CGAL::Comparison_result side = CGAL::compare(e, ET(d));
+  if(side == CGAL::EQUAL) return d;
+  const double low = side == CGAL::SMALLER ? std::nextafter(d, -HUGE_VAL) : d;
+  const double high = side == CGAL::SMALLER ? d : std::nextafter(d, HUGE_VAL);
+  const CGAL::Comparison_result c = CGAL::compare(e, (ET(low) + ET(high)) / 2);
+  if(c != CGAL::EQUAL) return c == CGAL::SMALLER ? low : high;
+  std::uint64_t bits; // adjacent doubles: one has an even significand
+  std::memcpy(&bits, &low, sizeof bits);
+  return (bits & 1) == 0 ? low : high;
+}
 
 inline Line_key key_of(const Exact_kernel::Segment_2& s)
 {
@@ -128,11 +157,19 @@ void merge_points_that_round_together(const std::vector<Line>& lines, std::vecto
   edges.swap(remaining);
 }
 
+// `metric_segments`: the segments the metrics of the lines are accumulated from (the pieces
+// themselves when empty; the fixed pieces always). `group_lines`: lines given by two points
+// in double precision, on which the pieces and metric segments with a `line_group` lie
+// exactly. Identifying the line of a piece from its own endpoints, which are intersections of
+// lines (the ends of a kinetic extent, deep in the lazy kernel's expression DAG), made the
+// exact evaluation of these endpoints the most expensive part of a kinetic partition (for
+// pieces on the same line, whose keys are equal, the interval filters never decide).
 template <class GeomTraits>
 Line_partition_2<GeomTraits>
 build_line_partition(const std::vector<Exact_piece>& pieces,
-                     const std::vector<Exact_kernel::Segment_2>& metric_segments,
-                     const typename Line_partition_2<GeomTraits>::Frame& frame)
+                     const std::vector<Exact_piece>& metric_segments,
+                     const typename Line_partition_2<GeomTraits>::Frame& frame,
+                     const std::vector<std::array<double, 4>>& group_lines = {})
 {
   using Partition = Line_partition_2<GeomTraits>;
   using Traits = CGAL::Arr_consolidated_curve_data_traits_2<
@@ -143,10 +180,25 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
   // Lines in the exact order of their canonical keys: indices do not depend on input order.
   // Keys are computed per piece; the arrangement carries each piece's line to its edges
   // (overlapping pieces are on the same line, so an edge has one line).
+  using Line_iterator = std::map<Line_key, std::size_t>::iterator;
   std::map<Line_key, std::size_t> line_index;
-  std::vector<std::map<Line_key, std::size_t>::iterator> piece_line;
+  std::vector<Line_iterator> group_line(group_lines.size(), line_index.end());
+  auto line_of = [&](const Exact_piece& p) {
+    if(p.line_group == std::size_t(-1)) return line_index.emplace(key_of(p.segment), 0).first;
+    Line_iterator& it = group_line.at(p.line_group);
+    if(it == line_index.end()) {
+      const auto& c = group_lines[p.line_group];
+      it = line_index.emplace(Line_key(Exact_kernel::Line_2(Exact_kernel::Point_2(c[0], c[1]),
+                                                            Exact_kernel::Point_2(c[2], c[3]))), 0).first;
+    }
+    return it;
+  };
+  std::vector<Line_iterator> piece_line;
   piece_line.reserve(pieces.size());
-  for(const Exact_piece& p : pieces) piece_line.push_back(line_index.emplace(key_of(p.segment), 0).first);
+  for(const Exact_piece& p : pieces) piece_line.push_back(line_of(p));
+  std::vector<Line_iterator> metric_line;
+  metric_line.reserve(metric_segments.size());
+  for(const Exact_piece& s : metric_segments) metric_line.push_back(line_of(s));
   if(line_index.empty())
     throw Input_error(Input_error_code::EMPTY_INPUT, "the input has no edge");
   std::vector<typename Partition::Line> lines;
@@ -159,8 +211,7 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
     const Exact_kernel::FT a = key.vertical_normal ? 0 : 1, b = key.vertical_normal ? 1 : key.u,
                            c = key.vertical_normal ? key.u : key.v;
     const Exact_kernel::FT c_frame = (a * frame.center_x + b * frame.center_y + c) / frame.scale;
-    line.coefficients = normalized_line({CGAL::to_double(a), CGAL::to_double(b),
-                                         CGAL::to_double(c_frame)});
+    line.coefficients = normalized_line({double_of(a), double_of(b), double_of(c_frame)});
     lines.push_back(line);
   }
   for(std::size_t i = 0; i < pieces.size(); ++i)
@@ -179,17 +230,14 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
   auto add_metric = [&](const Exact_kernel::Segment_2& s, std::size_t index) {
     auto& line = lines[index];
     auto normalized = [&](const Exact_kernel::Point_2& p) {
-      return std::array<double, 2>{(CGAL::to_double(p.x()) - frame.center_x) / frame.scale,
-                                   (CGAL::to_double(p.y()) - frame.center_y) / frame.scale};
+      return std::array<double, 2>{(double_of(p.x()) - frame.center_x) / frame.scale,
+                                   (double_of(p.y()) - frame.center_y) / frame.scale};
     };
     const auto p = normalized(s.source()), q = normalized(s.target());
     line.metric.add_segment(p[0], p[1], q[0], q[1]);
     ++line.number_of_segments;
   };
-  for(const auto& s : metric_segments) {
-    auto it = line_index.find(key_of(s));
-    if(it != line_index.end()) add_metric(s, it->second);
-  }
+  for(std::size_t i = 0; i < metric_segments.size(); ++i) add_metric(metric_segments[i].segment, metric_line[i]->second);
   for(std::size_t i = 0; i < pieces.size(); ++i)
     if(metric_segments.empty() || pieces[i].is_fixed) add_metric(pieces[i].segment, piece_line[i]->second);
 

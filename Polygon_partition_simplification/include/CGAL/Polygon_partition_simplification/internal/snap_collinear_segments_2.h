@@ -94,16 +94,15 @@ inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<do
   return reference;
 }
 
-// The exact segments of `input`, those of a group moved onto the line of its longest
-// segment (their endpoints projected on it).
+// The exact segments of `input`, those of a group (`reference`, from collinear_groups())
+// moved onto the line of its longest segment (their endpoints projected on it).
 inline std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>
-snap_collinear_segments(const std::vector<std::array<double, 4>>& input, double distance)
+snap_collinear_segments(const std::vector<std::array<double, 4>>& input, const std::vector<std::size_t>& reference)
 {
   using EK = CGAL::Exact_predicates_exact_constructions_kernel;
   std::vector<EK::Segment_2> result;
   result.reserve(input.size());
   for(const auto& c : input) result.emplace_back(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
-  const std::vector<std::size_t> reference = collinear_groups(input, distance);
   for(std::size_t s = 0; s < input.size(); ++s) {
     if(reference[s] == s) continue;
     const auto& c = input[reference[s]];
