@@ -822,8 +822,8 @@ void test_nearly_collinear_walls()
 // The same for polygons: two rotated rectangles side by side, whose sides have vertices in
 // their middle (where a neighbour's corner is: the shared side has one from each), collinear
 // only up to rounding, and one roof side bent by 1 cm on purpose. The pieces of each straight
-// side are put back on one line, the rings stay joined (cells tile the two rectangles), the
-// bent side keeps its two lines. Without it, most scenes were invalid.
+// side are put back on one line, the rings stay joined (cells tile the polygons), the bent
+// side keeps its two lines. Without it, most scenes were invalid.
 void test_nearly_collinear_polygon_edges()
 {
   std::size_t invalid_without = 0, scenes = 0;
@@ -839,21 +839,37 @@ void test_nearly_collinear_polygon_edges()
       rectangles[0].push_back(at(x, y));
     for(const auto& [x, y] : {std::pair(10., 0.), std::pair(20., 0.), std::pair(20., 5.), std::pair(10., 5.), std::pair(10., 5 * w)})
       rectangles[1].push_back(at(x, y));
+    // below, two triangles sharing an edge that ends at a corner (an edge given twice is one
+    // edge: counted twice, it made a group of its own, and the corner had three), and on
+    // seeds where the middle of the first bottom piece is exactly on it, a triangle with its
+    // apex there (a vertex inside another polygon's edge moves with that edge)
+    std::vector<CGAL::Polygon_2<K>> polygons = rectangles;
+    polygons.resize(4);
+    for(const auto& [x, y] : {std::pair(10., 0.), std::pair(13., -4.), std::pair(8., -4.)}) polygons[2].push_back(at(x, y));
+    for(const auto& [x, y] : {std::pair(10., 0.), std::pair(15., -2.), std::pair(13., -4.)}) polygons[3].push_back(at(x, y));
+    const K::Point_2 a0 = at(0, 0), a1 = at(10 * t, 0), middle((a0.x() + a1.x()) / 2, (a0.y() + a1.y()) / 2);
+    const bool t_junction = CGAL::collinear(a0, a1, middle); // exact predicate
+    if(t_junction) {
+      polygons.emplace_back();
+      for(const K::Point_2& q : {middle, at(5 * t - 1, -2), at(5 * t + 1, -2)}) polygons.back().push_back(q);
+    }
     ++scenes;
     invalid_without +=
-      PPS::line_partition_from_polygons_2(rectangles, PPS::parameters::collinearity_distance(0.)).is_valid() ? 0 : 1;
-    Partition p = PPS::line_partition_from_polygons_2(rectangles);
+      PPS::line_partition_from_polygons_2(polygons, PPS::parameters::collinearity_distance(0.)).is_valid() ? 0 : 1;
+    Partition p = PPS::line_partition_from_polygons_2(polygons);
     CHECK(p.is_valid());
-    // y = 0, x = 0, x = 10, x = 20, y = 5 (right roof), the two halves of the bent left roof
-    CHECK(p.number_of_lines() == 7 && p.number_of_cells() == 2);
+    // y = 0, x = 0, x = 10, x = 20, y = 5 (right roof), the two halves of the bent left roof;
+    // 5 for the two triangles, 3 for the third
+    CHECK(p.number_of_lines() == (t_junction ? 15u : 12u) && p.number_of_cells() == polygons.size());
     std::vector<Partition::Polygon_with_holes_2> cells;
     p.cells(std::back_inserter(cells));
-    double area = 0;
+    double area = 0, expected = 0;
     for(const auto& cell : cells) area += cell.outer_boundary().area();
-    CHECK(std::abs(area - (rectangles[0].area() + rectangles[1].area())) < 1e-9 * area);
-    std::reverse(rectangles.begin(), rectangles.end());
-    const Partition q = PPS::line_partition_from_polygons_2(rectangles);
-    CHECK(q.number_of_lines() == 7 && q.number_of_vertices() == p.number_of_vertices() &&
+    for(const auto& polygon : polygons) expected += std::abs(polygon.area());
+    CHECK(std::abs(area - expected) < 1e-9 * area);
+    std::reverse(polygons.begin(), polygons.end());
+    const Partition q = PPS::line_partition_from_polygons_2(polygons);
+    CHECK(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
           q.number_of_edges() == p.number_of_edges());
     CGAL::simplify_polygon_partition_2(p); // a valid input is accepted
     if(seed == 1)

@@ -11,6 +11,8 @@
 #include <CGAL/Polygon_partition_simplification/internal/snap_collinear_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
 #include <CGAL/Cartesian_converter.h>
 #include <CGAL/Kernel_traits.h>
 
@@ -25,9 +27,11 @@ namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
 
-// `collinearity` < 0 stands for the default: 1e-7 times the half-diagonal of the input
+// `collinearity` < 0 stands for the default: 1e-7 times the half-diagonal of the input;
+// `overlay_first`: the pieces may cross or overlap (they are not the edges of an arrangement)
 template <class GeomTraits>
-Line_partition_2<GeomTraits> line_partition_from_pieces(std::vector<Exact_piece>& pieces, double collinearity)
+Line_partition_2<GeomTraits> line_partition_from_pieces(std::vector<Exact_piece>& pieces, double collinearity,
+                                                        bool overlay_first)
 {
   if(pieces.empty()) throw Input_error(Input_error_code::EMPTY_INPUT, "the input has no edge");
   std::vector<std::array<double, 2>> points;
@@ -36,13 +40,25 @@ Line_partition_2<GeomTraits> line_partition_from_pieces(std::vector<Exact_piece>
       points.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y())});
   const Enclosing_rectangle_2 rectangle = enclosing_rectangle(points);
   // edges collinear up to rounding (a vertex in the middle of a straight wall at an angle) are
-  // moved onto one line, as the segments of kinetic_partition_2() are
+  // moved onto one line, as the segments of kinetic_partition_2() are; the vertices are moved,
+  // so the pieces are first split where they meet (an edge given by both polygons it
+  // separates is one edge, a corner of a polygon on the side of another is a vertex of both)
   if(collinearity < 0) collinearity = 1e-7 * rectangle.half_diagonal();
-  std::vector<Exact_kernel::Segment_2> edges;
-  for(const auto& p : pieces) edges.push_back(p.segment);
-  if(snap_collinear_edges(edges, collinearity) > 0) {
-    pieces.clear();
-    for(const auto& e : edges) pieces.push_back({e, false});
+  if(collinearity > 0) {
+    std::vector<Exact_kernel::Segment_2> edges;
+    if(overlay_first) {
+      CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<Exact_kernel>> overlay;
+      std::vector<Exact_kernel::Segment_2> segments;
+      for(const auto& p : pieces) segments.push_back(p.segment);
+      CGAL::insert(overlay, segments.begin(), segments.end());
+      for(auto e = overlay.edges_begin(); e != overlay.edges_end(); ++e)
+        edges.emplace_back(e->source()->point(), e->target()->point());
+    } else
+      for(const auto& p : pieces) edges.push_back(p.segment);
+    if(snap_collinear_edges(edges, collinearity) > 0) {
+      pieces.clear();
+      for(const auto& e : edges) pieces.push_back({e, false});
+    }
   }
   return build_line_partition<GeomTraits>(pieces, {}, frame_of<typename Line_partition_2<GeomTraits>::Frame>(rectangle));
 }
@@ -95,7 +111,8 @@ its pieces are not exactly on one line in double precision) are put on one line 
 `kinetic_partition_2()` does with segments: a vertex is moved onto the line of the longest edge
 of the group of the edges it bounds (or to the intersection of two such lines, within 4
 `collinearity_distance` of it), with exact constructions, so that rings keep their shared
-vertices; where it cannot be, the edges keep their own lines. Without this, the points of the
+vertices; where it cannot be, the groups of the longest edges are kept and the edges of the
+others keep their own lines. Without this, the points of the
 partition, computed in double from nearly identical lines, made an invalid partition in 73 of
 100 rotated rectangles with a vertex in the middle of two sides.
 
@@ -130,7 +147,7 @@ Line_partition_2<GeomTraits> line_partition_from_arrangement_2(const Arrangement
                                                         internal::exact_point(e->target()->point(), where)),
                       false});
   }
-  return internal::line_partition_from_pieces<GeomTraits>(pieces, collinearity);
+  return internal::line_partition_from_pieces<GeomTraits>(pieces, collinearity, false);
 }
 
 /*!
@@ -140,7 +157,8 @@ builds the line representation of the partition made by the edges of polygons (a
 footprint, a cadastral map): their edges are overlaid exactly (shared and crossing edges are
 found), collinear edges share one line, and the cells are the faces of the overlay.
 Zero-length edges (repeated vertices) are ignored. Edges collinear up to rounding are put on one
-line as in `line_partition_from_arrangement_2()`.
+line as in `line_partition_from_arrangement_2()`, after the overlay (so that an edge given by
+the two polygons it separates, or a corner lying on the side of another polygon, moves as one).
 
 \tparam PolygonRange a range of `CGAL::Polygon_2<K>` or `CGAL::Polygon_with_holes_2<K>`
 \tparam NamedParameters a sequence of named parameters
@@ -185,7 +203,7 @@ auto line_partition_from_polygons_2(const PolygonRange& polygons, const NamedPar
     }
     ++index;
   }
-  return internal::line_partition_from_pieces<K>(pieces, collinearity);
+  return internal::line_partition_from_pieces<K>(pieces, collinearity, true);
 }
 
 } // namespace Polygon_partition_simplification

@@ -70,25 +70,43 @@ inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<do
     const auto& c = input[r];
     return std::abs((c[2] - c[0]) * (y - c[1]) - (c[3] - c[1]) * (x - c[0])) / length[r];
   };
-  std::multimap<double, std::size_t> references; // angle -> rank in `order` of a group's longest segment
+  // The references are found by angle and by offset: a segment whose endpoints q are within
+  // `distance` of a line at an angle within `window` of its own has offsets (signed distances of
+  // the lines from a center, along the normal of the angle) that differ by at most
+  // distance + window |q - center|. By angle alone, a street grid at an angle (thousands of
+  // parallel lines) made the search quadratic. Bins of angles, in each the references by offset.
+  double center[2] = {0, 0};
+  for(const auto& c : input) { center[0] += (c[0] + c[2]) / (2. * double(n)); center[1] += (c[1] + c[3]) / (2. * double(n)); }
+  auto offset = [&](double a, double x, double y) { return -std::sin(a) * (x - center[0]) + std::cos(a) * (y - center[1]); };
+  const double bin_width = 1e-3;
+  auto bin_of = [&](double a) { return static_cast<long long>(std::floor(a / bin_width)); };
+  std::map<long long, std::multimap<double, std::size_t>> references; // angle bin -> offset -> rank in `order`
   for(std::size_t rank = 0; rank < n; ++rank) {
     const std::size_t s = order[rank];
     // a segment not much longer than the distance has no meaningful direction: left alone
     if(!(length[s] > 4 * distance)) continue;
     const double window = std::asin(std::min(1., 2 * distance / length[s])) + 1e-12;
+    const auto& c = input[s];
+    const double own_offset = offset(angle[s], c[0], c[1]);
+    const double radius = (std::max)(std::hypot(c[0] - center[0], c[1] - center[1]),
+                                     std::hypot(c[2] - center[0], c[3] - center[1]));
+    const double slack = (distance + window * radius) * (1 + 1e-9) + 1e-12 * (radius + std::abs(center[0]) + std::abs(center[1]));
     std::size_t best = n; // the longest matching reference (smallest rank)
-    auto scan = [&](double low, double high) {
-      for(auto it = references.lower_bound(low); it != references.end() && it->first <= high; ++it) {
-        if(it->second >= best) continue;
-        const std::size_t r = order[it->second];
-        const auto& c = input[s];
-        if(off_line(r, c[0], c[1]) <= distance && off_line(r, c[2], c[3]) <= distance) best = it->second;
-      }
+    // the references with an angle in [low, high] and an offset within `slack` of `around`
+    auto scan = [&](double low, double high, double around) {
+      for(auto bin = references.lower_bound(bin_of(low)); bin != references.end() && bin->first <= bin_of(high); ++bin)
+        for(auto it = bin->second.lower_bound(around - slack); it != bin->second.end() && it->first <= around + slack; ++it) {
+          if(it->second >= best) continue;
+          const std::size_t r = order[it->second];
+          if(angle[r] < low || angle[r] > high) continue;
+          if(off_line(r, c[0], c[1]) <= distance && off_line(r, c[2], c[3]) <= distance) best = it->second;
+        }
     };
-    scan(angle[s] - window, angle[s] + window);
-    if(angle[s] - window < 0) scan(angle[s] - window + pi, pi);
-    if(angle[s] + window >= pi) scan(0, angle[s] + window - pi);
-    if(best == n) references.emplace(angle[s], rank);
+    scan(angle[s] - window, angle[s] + window, own_offset);
+    // across the angle pi, normals are opposite: so are offsets
+    if(angle[s] - window < 0) scan(angle[s] - window + pi, pi, -own_offset);
+    if(angle[s] + window >= pi) scan(0, angle[s] + window - pi, -own_offset);
+    if(best == n) references[bin_of(angle[s])].emplace(offset(angle[s], c[0], c[1]), rank);
     else reference[s] = order[best];
   }
   return reference;
@@ -119,9 +137,11 @@ snap_collinear_segments(const std::vector<std::array<double, 4>>& input, const s
 // alone without opening its ring. A vertex is moved instead, onto the line of the group of each
 // edge it bounds: the projection on the one such line, or the intersection of two. When that
 // is not possible (three lines, or two whose intersection is farther than 4 `distance` from
-// the vertex: two walls that meet at a very flat angle), the groups of the edges at that
-// vertex are dissolved (their edges keep their own lines) and the placement is done again,
-// until every vertex is placed. Vertices are identified by their exact coordinates: rings that share a vertex stay
+// the vertex: two walls that meet at a very flat angle), the groups of the longest references
+// are kept (two, or one) and the others dissolved (their edges keep their own lines), and the
+// placement is done again, until every vertex is placed. The edges must not cross nor touch
+// away from their common endpoints (the edges of an arrangement): a vertex lying inside another
+// edge would not move with it. Vertices are identified by their exact coordinates: rings that share a vertex stay
 // joined. Returns the number of edges moved onto the line of another; edges reduced to a point
 // are removed.
 inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>& edges,
@@ -151,11 +171,30 @@ inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact
   for(std::size_t e = 0; e < n; ++e)
     for(std::size_t v : ends[e]) incident[v].push_back(e);
 
+  // reference segments by decreasing length, then by their sorted endpoints (not by index:
+  // the result does not depend on the input order)
+  auto longer = [&](std::size_t a, std::size_t b) {
+    auto key = [&](std::size_t r) {
+      const auto& c = input[r];
+      const std::array<double, 4> sorted =
+        std::make_pair(c[0], c[1]) <= std::make_pair(c[2], c[3]) ? c : std::array<double, 4>{{c[2], c[3], c[0], c[1]}};
+      return std::make_pair(-std::hypot(c[2] - c[0], c[3] - c[1]), sorted);
+    };
+    return key(a) < key(b);
+  };
   std::vector<EK::Point_2> placed;
   for(;;) {
-    // a group of one edge leaves its edge where it is
+    // a group of one edge leaves its edge where it is (an edge given twice, by the two rings
+    // it separates, is one edge)
     std::vector<std::size_t> members(n, 0);
-    for(std::size_t e = 0; e < n; ++e) ++members[reference[e]];
+    {
+      std::vector<std::array<std::size_t, 3>> distinct_edges;
+      for(std::size_t e = 0; e < n; ++e)
+        distinct_edges.push_back({reference[e], (std::min)(ends[e][0], ends[e][1]), (std::max)(ends[e][0], ends[e][1])});
+      std::sort(distinct_edges.begin(), distinct_edges.end());
+      distinct_edges.erase(std::unique(distinct_edges.begin(), distinct_edges.end()), distinct_edges.end());
+      for(const auto& d : distinct_edges) ++members[d[0]];
+    }
     auto group_of = [&](std::size_t e) { return members[reference[e]] > 1 ? reference[e] : n; };
     placed = vertices;
     bool all_placed = true;
@@ -171,23 +210,25 @@ inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact
         const auto& c = input[r];
         return EK::Line_2(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
       };
-      bool ok = false;
-      if(groups.size() == 1) {
-        const EK::Line_2 l = line_of(groups[0]);
-        if(!l.has_on(vertices[v])) placed[v] = l.projection(vertices[v]);
-        ok = true;
-      } else if(groups.size() == 2) {
+      // the groups of the longest edges are kept: the vertex goes to the intersection of the
+      // first two lines when it is close, else onto the first line; the others are dissolved
+      std::sort(groups.begin(), groups.end(), [&](std::size_t a, std::size_t b) { return longer(a, b); });
+      std::size_t kept = 1;
+      if(groups.size() >= 2) {
         const auto x = CGAL::intersection(line_of(groups[0]), line_of(groups[1]));
-        if(x) {
-          if(const EK::Point_2* p = boost::get<EK::Point_2>(&*x)) {
-            const double d2 = CGAL::to_double(CGAL::squared_distance(*p, vertices[v]));
-            if(d2 <= 16 * distance * distance) { placed[v] = *p; ok = true; }
-          }
+        const EK::Point_2* p = x ? boost::get<EK::Point_2>(&*x) : nullptr;
+        if(p != nullptr && CGAL::to_double(CGAL::squared_distance(*p, vertices[v])) <= 16 * distance * distance) {
+          placed[v] = *p;
+          kept = 2;
         }
       }
-      if(!ok) { // the groups at v are dissolved
+      if(kept == 1) {
+        const EK::Line_2 l = line_of(groups[0]);
+        if(!l.has_on(vertices[v])) placed[v] = l.projection(vertices[v]);
+      }
+      if(groups.size() > kept) {
         all_placed = false;
-        for(std::size_t e : incident[v]) dissolved[reference[e]] = true;
+        for(std::size_t g = kept; g < groups.size(); ++g) dissolved[groups[g]] = true;
       }
     }
     if(all_placed) break;
