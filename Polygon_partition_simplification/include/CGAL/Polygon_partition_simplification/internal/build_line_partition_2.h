@@ -43,18 +43,54 @@ struct Exact_piece
   std::size_t line_group = std::size_t(-1);
 };
 
-// Exact canonical form of a line: (1, b/a, c/a) when a != 0, else (0, 1, c/b).
+using Exact_number = Exact_kernel::FT::ET; // the exact number type behind the lazy one
+
+// The double nearest to an exact number (ties to even). The conversion of an exact number
+// rounds as its number type does (GMP's mpq truncates, Boost's rational does not), and
+// `CGAL::to_double()` of a lazy number returns the middle of its interval, which depends on
+// whether its exact value was needed before. The partition must depend on neither: the same
+// input gave different simplifications in two builds.
+inline double double_of(const Exact_number& e)
+{
+  const double d = CGAL::to_double(e); // within one unit in the last place of e
+  const CGAL::Comparison_result side = CGAL::compare(e, Exact_number(d));
+  if(side == CGAL::EQUAL) return d;
+  const double low = side == CGAL::SMALLER ? std::nextafter(d, -HUGE_VAL) : d;
+  const double high = side == CGAL::SMALLER ? d : std::nextafter(d, HUGE_VAL);
+  const CGAL::Comparison_result c = CGAL::compare(e, (Exact_number(low) + Exact_number(high)) / 2);
+  if(c != CGAL::EQUAL) return c == CGAL::SMALLER ? low : high;
+  std::uint64_t bits; // adjacent doubles: one has an even significand
+  std::memcpy(&bits, &low, sizeof bits);
+  return (bits & 1) == 0 ? low : high;
+}
+
+inline double double_of(const Exact_kernel::FT& x)
+{
+  const auto& i = x.approx();
+  if(i.inf() == i.sup()) return i.inf();
+  return double_of(x.exact());
+}
+
+// Exact canonical form of a line: (1, b/a, c/a) when a != 0, else (0, 1, c/b), in the exact
+// number type directly: every line's exact equation is needed (for the nearest doubles of its
+// coefficients), and evaluating it through the lazy kernel made each of its operations a node
+// of its own, synchronized on its own (a system call each, with threads).
 struct Line_key
 {
   bool vertical_normal; // a == 0
-  Exact_kernel::FT u, v;
+  Exact_number u, v;
 
-  explicit Line_key(const Exact_kernel::Line_2& l)
+  Line_key(const Exact_number& a, const Exact_number& b, const Exact_number& c)
   {
-    vertical_normal = CGAL::is_zero(l.a());
-    if(vertical_normal) { u = l.c() / l.b(); v = 0; }
-    else { u = l.b() / l.a(); v = l.c() / l.a(); }
+    vertical_normal = CGAL::is_zero(a);
+    if(vertical_normal) { u = c / b; v = 0; }
+    else { u = b / a; v = c / a; }
   }
+  explicit Line_key(const Exact_kernel::Line_2& l) : Line_key(CGAL::exact(l).a(), CGAL::exact(l).b(), CGAL::exact(l).c()) {}
+  // the line through (x0, y0) and (x1, y1), which differ
+  explicit Line_key(const std::array<double, 4>& c)
+    : Line_key(Exact_number(c[1]) - Exact_number(c[3]), Exact_number(c[2]) - Exact_number(c[0]),
+               Exact_number(c[0]) * Exact_number(c[3]) - Exact_number(c[2]) * Exact_number(c[1])) {}
   bool operator<(const Line_key& o) const
   {
     if(vertical_normal != o.vertical_normal) return vertical_normal < o.vertical_normal;
@@ -63,29 +99,6 @@ struct Line_key
     return CGAL::compare(v, o.v) == CGAL::SMALLER;
   }
 };
-
-// The double nearest to an exact number (ties to even). `CGAL::to_double()` of a lazy number
-// returns the middle of its interval when that is narrow enough, and the interval depends on
-// how the number was built and on whether its exact value was needed before; the conversion
-// of the exact value rounds as its number type does (GMP's mpq truncates). The partition must
-// not depend on either: the same input gave different simplifications in two builds.
-inline double double_of(const Exact_kernel::FT& x)
-{
-  const auto& i = x.approx();
-  if(i.inf() == i.sup()) return i.inf();
-  using ET = Exact_kernel::FT::ET;
-  const ET& e = x.exact();
-  const double d = CGAL::to_double(e); // within one unit in the last place of e
-  const CGAL::Comparison_result side = CGAL::compare(e, ET(d));
-  if(side == CGAL::EQUAL) return d;
-  const double low = side == CGAL::SMALLER ? std::nextafter(d, -HUGE_VAL) : d;
-  const double high = side == CGAL::SMALLER ? d : std::nextafter(d, HUGE_VAL);
-  const CGAL::Comparison_result c = CGAL::compare(e, (ET(low) + ET(high)) / 2);
-  if(c != CGAL::EQUAL) return c == CGAL::SMALLER ? low : high;
-  std::uint64_t bits; // adjacent doubles: one has an even significand
-  std::memcpy(&bits, &low, sizeof bits);
-  return (bits & 1) == 0 ? low : high;
-}
 
 inline Line_key key_of(const Exact_kernel::Segment_2& s)
 {
@@ -187,9 +200,7 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
     if(p.line_group == std::size_t(-1)) return line_index.emplace(key_of(p.segment), 0).first;
     Line_iterator& it = group_line.at(p.line_group);
     if(it == line_index.end()) {
-      const auto& c = group_lines[p.line_group];
-      it = line_index.emplace(Line_key(Exact_kernel::Line_2(Exact_kernel::Point_2(c[0], c[1]),
-                                                            Exact_kernel::Point_2(c[2], c[3]))), 0).first;
+      it = line_index.emplace(Line_key(group_lines[p.line_group]), 0).first;
     }
     return it;
   };
@@ -208,9 +219,9 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
     typename Partition::Line line;
     // a x + b y + c = 0 in input coordinates becomes, in the normalized frame,
     // a x' + b y' + (a cx + b cy + c) / s = 0.
-    const Exact_kernel::FT a = key.vertical_normal ? 0 : 1, b = key.vertical_normal ? 1 : key.u,
-                           c = key.vertical_normal ? key.u : key.v;
-    const Exact_kernel::FT c_frame = (a * frame.center_x + b * frame.center_y + c) / frame.scale;
+    const Exact_number a = key.vertical_normal ? 0 : 1, b = key.vertical_normal ? Exact_number(1) : key.u,
+                       c = key.vertical_normal ? key.u : key.v;
+    const Exact_number c_frame = (a * Exact_number(frame.center_x) + b * Exact_number(frame.center_y) + c) / Exact_number(frame.scale);
     line.coefficients = normalized_line({double_of(a), double_of(b), double_of(c_frame)});
     lines.push_back(line);
   }
