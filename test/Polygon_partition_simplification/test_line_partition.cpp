@@ -412,6 +412,17 @@ void expect_error(PPS::Input_error_code code, F f)
 
 void test_bad_input()
 {
+  // a nearly horizontal segment (a rise of the smallest subnormal): the equation of its line
+  // divided by its x coefficient overflowed the doubles, and converting that back to an exact
+  // number crashed (SIGFPE in GMP); lines are now divided by their larger coefficient
+  {
+    const std::vector<K::Segment_2> s{{K::Point_2(0, 0), K::Point_2(1, 4.9406564584124654e-324)},
+                                      {K::Point_2(0, 1), K::Point_2(1, 2)},
+                                      {K::Point_2(0.5, -1), K::Point_2(0.6, 3)}};
+    const Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid() && p.number_of_lines() == 7);
+    for(const auto& l : p.lines()) CHECK(std::isfinite(l.coefficients[0]) && std::isfinite(l.coefficients[1]) && std::isfinite(l.coefficients[2]));
+  }
   using C = PPS::Input_error_code;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   expect_error(C::EMPTY_INPUT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{}); });

@@ -27,6 +27,7 @@
 // (see `refill()`), instead of among all segments.
 
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
@@ -71,15 +72,17 @@ public:
     double_segments_.reserve(n);
     for(const auto& s : segments) {
       lines_.emplace_back(s.source(), s.target());
-      double_segments_.push_back({CGAL::to_double(s.source().x()), CGAL::to_double(s.source().y()),
-                                  CGAL::to_double(s.target().x()), CGAL::to_double(s.target().y())});
+      // nearest doubles: the doubles of the propagation (candidate searches, crossing
+      // distances) must not depend on which exact values were evaluated before
+      double_segments_.push_back({double_of(s.source().x()), double_of(s.source().y()),
+                                  double_of(s.target().x()), double_of(s.target().y())});
     }
     {
-      std::array<double, 2> low{{CGAL::to_double(box[0].x()), CGAL::to_double(box[0].y())}}, high = low;
+      std::array<double, 2> low{{double_of(box[0].x()), double_of(box[0].y())}}, high = low;
       for(const Point& p : box)
         for(int c = 0; c < 2; ++c) {
-          low[c] = std::min(low[c], CGAL::to_double(p[c]));
-          high[c] = std::max(high[c], CGAL::to_double(p[c]));
+          low[c] = std::min(low[c], double_of(p[c]));
+          high[c] = std::max(high[c], double_of(p[c]));
         }
       grid_ = Segment_grid_2(double_segments_, low, high);
       visited_.assign(n, 0);
@@ -111,8 +114,8 @@ public:
       const auto& s = segments[r / 2];
       ray.origin = (r % 2 == 1) ? s.target() : s.source();
       ray.direction = (r % 2 == 1) ? s.target() - s.source() : s.source() - s.target();
-      ray.direction_length =
-        std::sqrt(CGAL::to_double(ray.direction.squared_length()));
+      const Ray_in_double d = in_double(r);
+      ray.direction_length = std::hypot(d.vx, d.vy);
       // exit parameter through the rectangle: the smallest positive one over its sides
       bool found = false;
       for(int k = 0; k < 4; ++k) {
@@ -124,7 +127,12 @@ public:
         if(!found || t < ray.box_parameter) { ray.box_parameter = t; ray.box_side = k; found = true; }
       }
       CGAL_assertion(found);
-      ray.box_parameter_double = CGAL::to_double(ray.box_parameter);
+      { // in double, from the doubles of the ray and of the side's corners
+        const double ax = double_of(box[ray.box_side].x()), ay = double_of(box[ray.box_side].y());
+        const double bx = double_of(box[(ray.box_side + 1) % 4].x()), by = double_of(box[(ray.box_side + 1) % 4].y());
+        const double nx = ay - by, ny = bx - ax; // a normal of the side
+        ray.box_parameter_double = (nx * (ax - d.ox) + ny * (ay - d.oy)) / (nx * d.vx + ny * d.vy);
+      }
     }
   }
 
@@ -217,7 +225,7 @@ private:
     ++statistics_.refills;
     Ray& ray = rays_[r];
     const std::size_t own = r / 2;
-    const Ray_in_double d = in_double(ray);
+    const Ray_in_double d = in_double(r);
     if(++stamp_ == 0) { std::fill(visited_.begin(), visited_.end(), 0); stamp_ = 1; }
     std::vector<Candidate> found;
     double smallest = std::numeric_limits<double>::infinity();
@@ -259,11 +267,14 @@ private:
   {
     double ox, oy, vx, vy, length, limit;
   };
-  static Ray_in_double in_double(const Ray& ray)
+  // from the nearest doubles of the segment's endpoints
+  Ray_in_double in_double(std::size_t r) const
   {
-    return {CGAL::to_double(ray.origin.x()), CGAL::to_double(ray.origin.y()),
-            CGAL::to_double(ray.direction.x()), CGAL::to_double(ray.direction.y()), ray.direction_length,
-            ray.box_parameter_double * (1 + 1e-9) + 1e-12};
+    const auto& c = double_segments_[r / 2];
+    const bool at_target = r % 2 == 1; // the ray leaves the target, away from the source
+    const double ox = at_target ? c[2] : c[0], oy = at_target ? c[3] : c[1];
+    const double vx = at_target ? c[2] - c[0] : c[0] - c[2], vy = at_target ? c[3] - c[1] : c[1] - c[3];
+    return {ox, oy, vx, vy, rays_[r].direction_length, rays_[r].box_parameter_double * (1 + 1e-9) + 1e-12};
   }
 
   // Double parameters closer than this to p are ordered exactly (push_next() groups them).
@@ -426,7 +437,7 @@ private:
   bool next_is_close(const Ray& ray, const Candidate& head) const
   {
     const std::size_t own = std::size_t(&ray - rays_.data()) / 2;
-    const Ray_in_double d = in_double(ray);
+    const Ray_in_double d = in_double(std::size_t(&ray - rays_.data()));
     const double from = head.parameter - cluster_tolerance(head.parameter);
     double next = ray.box_parameter_double;
     for(std::size_t j = 0; j < double_segments_.size(); ++j) {

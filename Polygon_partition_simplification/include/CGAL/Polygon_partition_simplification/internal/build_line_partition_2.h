@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
@@ -22,8 +23,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -31,8 +30,6 @@
 namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
-
-using Exact_kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
 struct Exact_piece
 {
@@ -43,47 +40,20 @@ struct Exact_piece
   std::size_t line_group = std::size_t(-1);
 };
 
-using Exact_number = Exact_kernel::FT::ET; // the exact number type behind the lazy one
-
-// The double nearest to an exact number (ties to even). The conversion of an exact number
-// rounds as its number type does (GMP's mpq truncates, Boost's rational does not), and
-// `CGAL::to_double()` of a lazy number returns the middle of its interval, which depends on
-// whether its exact value was needed before. The partition must depend on neither: the same
-// input gave different simplifications in two builds.
-inline double double_of(const Exact_number& e)
-{
-  const double d = CGAL::to_double(e); // within one unit in the last place of e
-  const CGAL::Comparison_result side = CGAL::compare(e, Exact_number(d));
-  if(side == CGAL::EQUAL) return d;
-  const double low = side == CGAL::SMALLER ? std::nextafter(d, -HUGE_VAL) : d;
-  const double high = side == CGAL::SMALLER ? d : std::nextafter(d, HUGE_VAL);
-  const CGAL::Comparison_result c = CGAL::compare(e, (Exact_number(low) + Exact_number(high)) / 2);
-  if(c != CGAL::EQUAL) return c == CGAL::SMALLER ? low : high;
-  std::uint64_t bits; // adjacent doubles: one has an even significand
-  std::memcpy(&bits, &low, sizeof bits);
-  return (bits & 1) == 0 ? low : high;
-}
-
-inline double double_of(const Exact_kernel::FT& x)
-{
-  const auto& i = x.approx();
-  if(i.inf() == i.sup()) return i.inf();
-  return double_of(x.exact());
-}
-
-// Exact canonical form of a line: (1, b/a, c/a) when a != 0, else (0, 1, c/b), in the exact
-// number type directly: every line's exact equation is needed (for the nearest doubles of its
-// coefficients), and evaluating it through the lazy kernel made each of its operations a node
-// of its own, synchronized on its own (a system call each, with threads).
+// Exact canonical form of a line: (1, b/a, c/a) when |a| >= |b|, else (a/b, 1, c/b) (so that
+// no coefficient overflows: b/a of a nearly horizontal line can be beyond the doubles), in the
+// exact number type directly: every line's exact equation is needed (for the nearest doubles
+// of its coefficients), and evaluating it through the lazy kernel made each of its operations
+// a node of its own, synchronized on its own (a system call each, with threads).
 struct Line_key
 {
-  bool vertical_normal; // a == 0
+  bool vertical_normal; // |a| < |b|: the key is (u, 1, v), else (1, u, v)
   Exact_number u, v;
 
   Line_key(const Exact_number& a, const Exact_number& b, const Exact_number& c)
   {
-    vertical_normal = CGAL::is_zero(a);
-    if(vertical_normal) { u = c / b; v = 0; }
+    vertical_normal = CGAL::compare(CGAL::abs(a), CGAL::abs(b)) == CGAL::SMALLER;
+    if(vertical_normal) { u = a / b; v = c / b; }
     else { u = b / a; v = c / a; }
   }
   explicit Line_key(const Exact_kernel::Line_2& l) : Line_key(CGAL::exact(l).a(), CGAL::exact(l).b(), CGAL::exact(l).c()) {}
@@ -219,8 +189,8 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
     typename Partition::Line line;
     // a x + b y + c = 0 in input coordinates becomes, in the normalized frame,
     // a x' + b y' + (a cx + b cy + c) / s = 0.
-    const Exact_number a = key.vertical_normal ? 0 : 1, b = key.vertical_normal ? Exact_number(1) : key.u,
-                       c = key.vertical_normal ? key.u : key.v;
+    const Exact_number a = key.vertical_normal ? key.u : Exact_number(1), b = key.vertical_normal ? Exact_number(1) : key.u,
+                       c = key.v;
     const Exact_number c_frame = (a * Exact_number(frame.center_x) + b * Exact_number(frame.center_y) + c) / Exact_number(frame.scale);
     line.coefficients = normalized_line({double_of(a), double_of(b), double_of(c_frame)});
     lines.push_back(line);
@@ -237,20 +207,32 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
     CGAL::insert(arrangement, curves.begin(), curves.end());
   }
 
-  // Metrics: from the given segments, or from the pieces themselves.
-  auto add_metric = [&](const Exact_kernel::Segment_2& s, std::size_t index) {
-    auto& line = lines[index];
-    auto normalized = [&](const Exact_kernel::Point_2& p) {
-      return std::array<double, 2>{(double_of(p.x()) - frame.center_x) / frame.scale,
-                                   (double_of(p.y()) - frame.center_y) / frame.scale};
+  // Metrics: from the given segments, or from the pieces themselves, added line by line in
+  // the order of their (nearest double, normalized) endpoints, so that the sums, which are
+  // rounded, do not depend on the order of the input.
+  {
+    struct Metric_term { std::size_t line; std::array<double, 4> ends; };
+    std::vector<Metric_term> terms;
+    auto add = [&](const Exact_kernel::Segment_2& s, std::size_t index) {
+      auto normalized = [&](const Exact_kernel::Point_2& p) {
+        return std::array<double, 2>{(double_of(p.x()) - frame.center_x) / frame.scale,
+                                     (double_of(p.y()) - frame.center_y) / frame.scale};
+      };
+      std::array<double, 2> p = normalized(s.source()), q = normalized(s.target());
+      if(q < p) std::swap(p, q);
+      terms.push_back({index, {p[0], p[1], q[0], q[1]}});
     };
-    const auto p = normalized(s.source()), q = normalized(s.target());
-    line.metric.add_segment(p[0], p[1], q[0], q[1]);
-    ++line.number_of_segments;
-  };
-  for(std::size_t i = 0; i < metric_segments.size(); ++i) add_metric(metric_segments[i].segment, metric_line[i]->second);
-  for(std::size_t i = 0; i < pieces.size(); ++i)
-    if(metric_segments.empty() || pieces[i].is_fixed) add_metric(pieces[i].segment, piece_line[i]->second);
+    for(std::size_t i = 0; i < metric_segments.size(); ++i) add(metric_segments[i].segment, metric_line[i]->second);
+    for(std::size_t i = 0; i < pieces.size(); ++i)
+      if(metric_segments.empty() || pieces[i].is_fixed) add(pieces[i].segment, piece_line[i]->second);
+    std::sort(terms.begin(), terms.end(), [](const Metric_term& a, const Metric_term& b) {
+      return std::tie(a.line, a.ends) < std::tie(b.line, b.ends);
+    });
+    for(const Metric_term& t : terms) {
+      lines[t.line].metric.add_segment(t.ends[0], t.ends[1], t.ends[2], t.ends[3]);
+      ++lines[t.line].number_of_segments;
+    }
+  }
 
   // Graph of the arrangement, with the line of each edge; dangling edges are pruned.
   std::map<Vertex_handle, std::size_t> vertex_index;
