@@ -47,23 +47,22 @@ struct Exact_piece
 // a node of its own, synchronized on its own (a system call each, with threads).
 struct Line_key
 {
-  bool vertical_normal; // |a| < |b|: the key is (u, 1, v), else (1, u, v)
+  bool divided_by_b; // |a| < |b|: the key is (u, 1, v) = (a, b, c) / b, else (1, u, v) = (a, b, c) / a
   Exact_number u, v;
 
   Line_key(const Exact_number& a, const Exact_number& b, const Exact_number& c)
   {
-    vertical_normal = CGAL::compare(CGAL::abs(a), CGAL::abs(b)) == CGAL::SMALLER;
-    if(vertical_normal) { u = a / b; v = c / b; }
+    divided_by_b = CGAL::compare(CGAL::abs(a), CGAL::abs(b)) == CGAL::SMALLER;
+    if(divided_by_b) { u = a / b; v = c / b; }
     else { u = b / a; v = c / a; }
   }
-  explicit Line_key(const Exact_kernel::Line_2& l) : Line_key(CGAL::exact(l).a(), CGAL::exact(l).b(), CGAL::exact(l).c()) {}
   // the line through (x0, y0) and (x1, y1), which differ
   explicit Line_key(const std::array<double, 4>& c)
     : Line_key(Exact_number(c[1]) - Exact_number(c[3]), Exact_number(c[2]) - Exact_number(c[0]),
                Exact_number(c[0]) * Exact_number(c[3]) - Exact_number(c[2]) * Exact_number(c[1])) {}
   bool operator<(const Line_key& o) const
   {
-    if(vertical_normal != o.vertical_normal) return vertical_normal < o.vertical_normal;
+    if(divided_by_b != o.divided_by_b) return divided_by_b < o.divided_by_b;
     const CGAL::Comparison_result cu = CGAL::compare(u, o.u);
     if(cu != CGAL::EQUAL) return cu == CGAL::SMALLER;
     return CGAL::compare(v, o.v) == CGAL::SMALLER;
@@ -72,7 +71,9 @@ struct Line_key
 
 inline Line_key key_of(const Exact_kernel::Segment_2& s)
 {
-  return Line_key(Exact_kernel::Line_2(s.source(), s.target()));
+  const Exact_kernel::Line_2 lazy(s.source(), s.target());
+  const auto& line = CGAL::exact(lazy); // a reference into `lazy`
+  return Line_key(line.a(), line.b(), line.c());
 }
 
 // The points of a partition are computed in double from their lines, and two of them must
@@ -161,7 +162,8 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
   using Vertex_handle = typename Arrangement::Vertex_const_handle;
 
   // Lines in the exact order of their canonical keys: indices do not depend on input order.
-  // Keys are computed per piece; the arrangement carries each piece's line to its edges
+  // Keys are computed per piece, or once per group of pieces known to be on one line (from the
+  // group's double endpoints); the arrangement carries each piece's line to its edges
   // (overlapping pieces are on the same line, so an edge has one line).
   using Line_iterator = std::map<Line_key, std::size_t>::iterator;
   std::map<Line_key, std::size_t> line_index;
@@ -189,7 +191,7 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
     typename Partition::Line line;
     // a x + b y + c = 0 in input coordinates becomes, in the normalized frame,
     // a x' + b y' + (a cx + b cy + c) / s = 0.
-    const Exact_number a = key.vertical_normal ? key.u : Exact_number(1), b = key.vertical_normal ? Exact_number(1) : key.u,
+    const Exact_number a = key.divided_by_b ? key.u : Exact_number(1), b = key.divided_by_b ? Exact_number(1) : key.u,
                        c = key.v;
     const Exact_number c_frame = (a * Exact_number(frame.center_x) + b * Exact_number(frame.center_y) + c) / Exact_number(frame.scale);
     line.coefficients = normalized_line({double_of(a), double_of(b), double_of(c_frame)});
