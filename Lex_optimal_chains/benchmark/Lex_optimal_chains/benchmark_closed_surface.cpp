@@ -5,7 +5,8 @@
 //                                              runs every measurement for each N, each in a
 //                                              fresh process (peak memory is per process),
 //                                              R times (default 1), and prints a table with
-//                                              the medians (ratios taken within a repetition)
+//                                              the medians (ratios taken within a repetition);
+//                                              all on the lowest-numbered CPU allowed
 //   benchmark_closed_surface --one MODE N      one measurement (delaunay | lex | afsr), JSON
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -102,6 +103,7 @@ int main(int argc, char** argv)
     return 2;
   }
   if(sizes.empty()) sizes = {100000, 1000000};
+  pin_measurements_to_one_cpu(); // the processes of the ratios on the same CPU
   std::cout << std::fixed << std::setprecision(3)
             << "points     delaunay_s  lex_total_s  order+cut_s  (order+cut)/DT  total/DT  peakRSS_lex/DT  afsr_s  afsr/lex\n";
   for(std::size_t n : sizes) {

@@ -6,7 +6,8 @@
 //                                            each measurement in a fresh process (peak
 //                                            memory is per process), R times (default 1),
 //                                            then a table of medians (ratios taken within a
-//                                            repetition)
+//                                            repetition); all on the lowest-numbered CPU
+//                                            allowed
 //   benchmark_open_surface --one MODE N      one measurement (delaunay | lex), JSON
 //   benchmark_open_surface --profile N       one verbose reconstruction
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -97,6 +98,7 @@ int main(int argc, char** argv)
     return 2;
   }
   if(sizes.empty()) sizes = {1000000, 5000000};
+  pin_measurements_to_one_cpu(); // the processes of the ratios on the same CPU
   std::cout << std::fixed << std::setprecision(3)
             << "points     delaunay_s  representative_s  order_s  alg10_s  optimal_chain_s  output_s  total_s"
                "  repr/DT  chain/DT  total/DT  peak_GB  peak/DT\n";

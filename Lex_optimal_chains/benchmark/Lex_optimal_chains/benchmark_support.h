@@ -1,9 +1,11 @@
 // Shared by the benchmarks: peak memory of this process, one measurement run in a child
-// process (peak memory is per process) whose one-line flat JSON is parsed, the median of
-// repeated measurements, and the command line (sizes and --repeat R).
+// process (peak memory is per process) whose one-line flat JSON is parsed, all the
+// measurements of a run on one CPU, the median of repeated measurements, and the command line
+// (sizes and --repeat R).
 #ifndef LEX_OPTIMAL_CHAINS_BENCHMARK_SUPPORT_H
 #define LEX_OPTIMAL_CHAINS_BENCHMARK_SUPPORT_H
 
+#include <sched.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -19,6 +21,30 @@ inline double peak_rss_mb()
   rusage u;
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_maxrss) / 1024.0; // kilobytes on Linux
+}
+
+// Pins this process, and so the children it starts, to the lowest-numbered CPU it may run on,
+// and says which on std::cout (or that it could not). The ratios of a run
+// compare measurements made in different processes: on the 2-vCPU virtual machine of the
+// project the two CPUs differ in speed, by workload (the Delaunay triangulation took the same
+// time on both, a reconstruction's cut 0.48 s on one and 0.71 to 1.12 s on the other), so that
+// a ratio of two processes placed on different CPUs by the scheduler mixes in that difference.
+inline void pin_measurements_to_one_cpu()
+{
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  int pinned = -1;
+  if(sched_getaffinity(0, sizeof allowed, &allowed) == 0)
+    for(int cpu = 0; cpu < CPU_SETSIZE && pinned < 0; ++cpu)
+      if(CPU_ISSET(cpu, &allowed)) {
+        cpu_set_t one;
+        CPU_ZERO(&one);
+        CPU_SET(cpu, &one);
+        if(sched_setaffinity(0, sizeof one, &one) == 0) pinned = cpu;
+        break;
+      }
+  if(pinned >= 0) std::cout << "all measurements on CPU " << pinned << "\n";
+  else std::cout << "measurements not pinned to one CPU\n";
 }
 
 // Runs `command`, echoes its output to stderr and returns its numeric "key":value pairs.
