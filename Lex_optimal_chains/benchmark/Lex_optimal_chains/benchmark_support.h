@@ -35,7 +35,7 @@ inline void pin_measurements_to_one_cpu()
   CPU_ZERO(&allowed);
   int pinned = -1;
   if(sched_getaffinity(0, sizeof allowed, &allowed) == 0)
-    for(int cpu = 0; cpu < CPU_SETSIZE && pinned < 0; ++cpu)
+    for(int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
       if(CPU_ISSET(cpu, &allowed)) {
         cpu_set_t one;
         CPU_ZERO(&one);

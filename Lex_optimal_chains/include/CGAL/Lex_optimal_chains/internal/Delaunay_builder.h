@@ -18,7 +18,6 @@
 #endif
 
 #include <cmath>
-#include <iterator>
 #include <string>
 #include <vector>
 
