@@ -178,16 +178,20 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
   auto test = [&](std::size_t i, std::size_t j) {
     const auto& e = edges[i];
     const auto& f = edges[j];
-    const K::Segment_2 se(point(e[0]), point(e[1])), sf(point(f[0]), point(f[1]));
     std::size_t common = 0, shared = 0;
     for(std::size_t a : e)
       for(std::size_t b : f)
         if(a == b) { ++common; shared = a; }
-    if(common == 0) return CGAL::do_intersect(se, sf);
+    if(common == 0) return CGAL::do_intersect(K::Segment_2(point(e[0]), point(e[1])), K::Segment_2(point(f[0]), point(f[1])));
     if(common == 2) return true;
-    // they share an end: they must not overlap
+    // They share an end s and must not overlap, which they do exactly when they leave s in the
+    // same direction: collinear, with other ends on the same side of s. The side is tested first:
+    // consecutive edges along a line leave s in opposite directions, which the filtered sign of
+    // (oe - s).(of - s) decides at once, whereas their orientation, nearly zero, needs the exact
+    // arithmetic (the ends are distinct points: partition_defect checks it before).
+    const K::Point_2 s = point(shared);
     const K::Point_2 oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
-    return se.has_on(of) || sf.has_on(oe);
+    return CGAL::angle(oe, s, of) == CGAL::ACUTE && CGAL::orientation(s, oe, of) == CGAL::COLLINEAR;
   };
   // Two edges that meet share a point, which lies in a cell where both are listed: each suspect
   // inside the core is tested against the edges listed in its cells whose boxes meet its box
