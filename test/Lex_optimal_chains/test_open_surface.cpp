@@ -5,6 +5,8 @@
 // - a Möbius strip bounded by its boundary curve: the Z2 optimum cannot be oriented (the
 //   mesh is cut to orient it), the Q optimum is a different chain, orientable (Fig. 4.25);
 // - a flat tile (all points coplanar) meshes with the footprint boundary;
+// - a terrain on an integer lattice (exact ties of the order everywhere) gives the same
+//   mesh whatever the order of its points and the number of threads;
 // - a boundary through the cloud is refused, then repaired by removing the blocking points;
 // - bad input gives the documented error and leaves the mesh untouched.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -199,6 +201,44 @@ void test_flat_tile(CGAL::Random& rng)
   std::cout << "flat tile: " << mesh.number_of_faces() << " faces (" << report.dropped_triangles << " dropped)\n";
 }
 
+// A terrain sampled on an integer lattice, with integer heights: the triangles of its
+// Delaunay triangulation tie by the thousands (equal R_B and R_C), so the result rests on the
+// documented tie-break. It must not depend on the order of the points nor on the number of
+// threads, over Z2 and over Q, and it must be a valid mesh bounded by the footprint polygon.
+void test_lattice_terrain(CGAL::Random& rng)
+{
+  std::vector<Point> points;
+  for(int i = 0; i < 24; ++i)
+    for(int j = 0; j < 24; ++j) points.emplace_back(i, j, double(rng.get_int(0, 3)));
+  const std::vector<Point> polygon = LOC::footprint_boundary(points);
+  std::set<std::pair<Point, Point>> polygon_edges;
+  for(std::size_t i = 0; i + 1 < polygon.size(); ++i)
+    polygon_edges.emplace((std::min)(polygon[i], polygon[i + 1]), (std::max)(polygon[i], polygon[i + 1]));
+  const std::vector<std::vector<Point>> boundary{polygon};
+  for(const auto field : {LOC::Coefficient_field::Z2, LOC::Coefficient_field::Q}) {
+    std::string off[3];
+    for(int k = 0; k < 3; ++k) {
+      std::vector<Point> input = points;
+      if(k > 0) CGAL::cpp98::random_shuffle(input.begin(), input.end(), rng);
+      Mesh mesh;
+      const auto report = CGAL::lex_optimal_open_surface_reconstruction(
+        input, boundary, mesh, LOC::parameters::number_of_threads(k == 2 ? 2u : 1u, LOC::parameters::coefficient_field(field)));
+      assert(CGAL::is_valid_polygon_mesh(mesh) && components(mesh) == 1);
+      if(report.non_manifold_edges == 0 && report.non_manifold_vertices == 0) assert(border_edges(mesh) == polygon_edges);
+      if(k == 0)
+        std::cout << "lattice terrain (" << (field == LOC::Coefficient_field::Q ? "Q" : "Z2") << "): "
+                  << mesh.number_of_faces() << " faces, " << report.number_of_triangles_in_close_runs
+                  << " triangles in runs the keys cannot order, " << report.number_of_exactly_ordered_triangles
+                  << " ordered exactly\n";
+      std::ostringstream s;
+      s.precision(17);
+      s << mesh;
+      off[k] = s.str();
+    }
+    assert(off[0] == off[1] && off[0] == off[2]);
+  }
+}
+
 void test_boundary_through_the_cloud(CGAL::Random& rng)
 {
   const std::vector<Point> points = height_field(rng, 3000, 0.02);
@@ -339,6 +379,7 @@ int main()
   test_height_field(rng);
   test_moebius(rng);
   test_flat_tile(rng);
+  test_lattice_terrain(rng);
   test_boundary_through_the_cloud(rng);
   test_bad_input(rng);
   test_footprint_of_steep_and_noisy_tiles(rng);
