@@ -270,27 +270,45 @@ public:
   // of triangles dropped because they touch a dropped vertex.
   void finish(std::vector<Point>& points, std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
   {
-    // the used vertices, numbered in the order of their points
+    // the used vertices, numbered in the order of their points; the points are copied next to
+    // their vertex numbers, so that the sort reads contiguous memory, not the vertices
     constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
     std::vector<std::uint32_t> number(dense_.size(), unused);
-    std::vector<const Vertex*> used;
+    struct Used_vertex
+    {
+      Point point;
+      std::uint32_t vertex; // dense number
+    };
+    std::vector<Used_vertex> used;
     for(const auto& t : triangles_)
       for(const std::uint32_t v : t)
-        if(number[v] == unused) { number[v] = 0; used.push_back(dense_.element(v)); }
-    std::sort(used.begin(), used.end(), [](const Vertex* a, const Vertex* b) { return a->point() < b->point(); });
+        if(number[v] == unused) { number[v] = 0; used.push_back({dense_.element(v)->point(), v}); }
+    std::sort(used.begin(), used.end(), [](const Used_vertex& a, const Used_vertex& b) { return a.point < b.point; });
     points.clear();
     points.reserve(used.size());
     for(std::uint32_t k = 0; k < used.size(); ++k) {
-      number[dense_.index(used[k])] = k;
-      points.push_back(used[k]->point());
+      number[used[k].vertex] = k;
+      points.push_back(used[k].point);
     }
+    std::vector<Used_vertex>().swap(used);
     for(auto& t : triangles_) {
       for(std::uint32_t& v : t) v = number[v];
       if(oriented_) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // keeps the orientation
       else std::sort(t.begin(), t.end());
     }
-    std::sort(triangles_.begin(), triangles_.end());
-    triangles.swap(triangles_);
+    // sorted lexicographically: distributed by first vertex (a counting sort), then each
+    // vertex's few triangles sorted by the other two
+    std::vector<std::uint32_t> first(points.size() + 1, 0);
+    for(const auto& t : triangles_) ++first[t[0] + 1];
+    for(std::size_t v = 0; v < points.size(); ++v) first[v + 1] += first[v];
+    triangles.assign(triangles_.size(), std::array<std::uint32_t, 3>{});
+    {
+      std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+      for(const auto& t : triangles_) triangles[next[t[0]]++] = t;
+    }
+    std::vector<std::array<std::uint32_t, 3>>().swap(triangles_);
+    for(std::size_t v = 0; v < points.size(); ++v)
+      if(first[v + 1] - first[v] > 1) std::sort(triangles.begin() + first[v], triangles.begin() + first[v + 1]);
     dropped = dropped_;
   }
 
