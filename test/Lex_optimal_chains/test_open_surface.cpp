@@ -58,6 +58,15 @@ std::set<std::pair<Point, Point>> border_edges(const Mesh& mesh)
   return edges;
 }
 
+// edges of a polyline as point pairs (undirected)
+std::set<std::pair<Point, Point>> edges_of_polyline(const std::vector<Point>& polyline)
+{
+  std::set<std::pair<Point, Point>> edges;
+  for(std::size_t i = 0; i + 1 < polyline.size(); ++i)
+    edges.emplace((std::min)(polyline[i], polyline[i + 1]), (std::max)(polyline[i], polyline[i + 1]));
+  return edges;
+}
+
 std::size_t components(Mesh mesh)
 {
   auto fcc = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
@@ -86,9 +95,7 @@ void test_height_field(CGAL::Random& rng)
 {
   const std::vector<Point> points = height_field(rng, 4000, 0.02);
   const std::vector<Point> polygon = LOC::footprint_boundary(points);
-  std::set<std::pair<Point, Point>> polygon_edges;
-  for(std::size_t i = 0; i + 1 < polygon.size(); ++i)
-    polygon_edges.emplace((std::min)(polygon[i], polygon[i + 1]), (std::max)(polygon[i], polygon[i + 1]));
+  const std::set<std::pair<Point, Point>> polygon_edges = edges_of_polyline(polygon);
   const std::vector<std::vector<Point>> boundary{polygon};
   for(const auto field : {LOC::Coefficient_field::Q, LOC::Coefficient_field::Z2}) {
     Mesh mesh;
@@ -211,9 +218,7 @@ void test_lattice_terrain(CGAL::Random& rng)
   for(int i = 0; i < 24; ++i)
     for(int j = 0; j < 24; ++j) points.emplace_back(i, j, double(rng.get_int(0, 3)));
   const std::vector<Point> polygon = LOC::footprint_boundary(points);
-  std::set<std::pair<Point, Point>> polygon_edges;
-  for(std::size_t i = 0; i + 1 < polygon.size(); ++i)
-    polygon_edges.emplace((std::min)(polygon[i], polygon[i + 1]), (std::max)(polygon[i], polygon[i + 1]));
+  const std::set<std::pair<Point, Point>> polygon_edges = edges_of_polyline(polygon);
   const std::vector<std::vector<Point>> boundary{polygon};
   for(const auto field : {LOC::Coefficient_field::Z2, LOC::Coefficient_field::Q}) {
     std::string off[3];
