@@ -14,6 +14,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 
 #include <CGAL/Bbox_3.h>
@@ -298,14 +299,10 @@ public:
     }
     // sorted lexicographically: distributed by first vertex (a counting sort), then each
     // vertex's few triangles sorted by the other two
-    std::vector<std::uint32_t> first(points.size() + 1, 0);
-    for(const auto& t : triangles_) ++first[t[0] + 1];
-    for(std::size_t v = 0; v < points.size(); ++v) first[v + 1] += first[v];
     triangles.assign(triangles_.size(), std::array<std::uint32_t, 3>{});
-    {
-      std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-      for(const auto& t : triangles_) triangles[next[t[0]]++] = t;
-    }
+    const std::vector<std::uint32_t> first = counting_sort_by_key(
+      points.size(), std::uint32_t(triangles_.size()), [this](std::uint32_t i) { return triangles_[i][0]; },
+      [&](std::uint32_t i, std::uint32_t at) { triangles[at] = triangles_[i]; });
     std::vector<std::array<std::uint32_t, 3>>().swap(triangles_);
     for(std::size_t v = 0; v < points.size(); ++v)
       if(first[v + 1] - first[v] > 1) std::sort(triangles.begin() + first[v], triangles.begin() + first[v + 1]);

@@ -10,6 +10,8 @@
 // vertex, is grouped by the larger vertex with a few passes, or sorted when it is large.
 // Half-edge h = 3 t + k of triangle t runs from corner h to corner 3 t + (k + 1) % 3.
 
+#include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <utility>
@@ -32,13 +34,9 @@ void for_each_edge_group(std::size_t number_of_vertices, std::uint32_t number_of
   auto head = [&](std::uint32_t h) { return corner_vertex(3 * (h / 3) + (h % 3 + 1) % 3); };
   auto smaller = [&](std::uint32_t h) { return (std::min)(tail(h), head(h)); };
   auto larger = [&](std::uint32_t h) { return (std::max)(tail(h), head(h)); };
-  std::vector<std::uint32_t> first(number_of_vertices + 1, 0), bucket(nh);
-  for(std::uint32_t h = 0; h < nh; ++h) ++first[smaller(h) + 1];
-  for(std::size_t v = 0; v < number_of_vertices; ++v) first[v + 1] += first[v];
-  {
-    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-    for(std::uint32_t h = 0; h < nh; ++h) bucket[next[smaller(h)]++] = h; // increasing in a bucket
-  }
+  std::vector<std::uint32_t> bucket(nh); // increasing in a bucket
+  const std::vector<std::uint32_t> first =
+    counting_sort_by_key(number_of_vertices, nh, smaller, [&](std::uint32_t h, std::uint32_t at) { bucket[at] = h; });
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted; // (larger vertex, half-edge)
   for(std::size_t v = 0; v < number_of_vertices; ++v) {
     std::uint32_t* const begin = bucket.data() + first[v];

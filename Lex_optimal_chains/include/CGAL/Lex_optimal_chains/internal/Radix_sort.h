@@ -25,6 +25,21 @@ inline void radix_sort_high_words(std::vector<std::uint64_t>& v, std::vector<std
   }
 }
 
+// Counting sort of the items 0, ..., n - 1 by `key(i)`, in [0, number_of_keys): calls
+// `place(i, position)` for every item, in increasing order of the items, the positions of key k
+// being first[k], ..., first[k + 1] - 1; returns `first` (number_of_keys + 1 offsets).
+template <class Key, class Place>
+std::vector<std::uint32_t> counting_sort_by_key(std::size_t number_of_keys, std::uint32_t n, const Key& key,
+                                                const Place& place)
+{
+  std::vector<std::uint32_t> first(number_of_keys + 1, 0);
+  for(std::uint32_t i = 0; i < n; ++i) ++first[key(i) + 1];
+  for(std::size_t k = 0; k < number_of_keys; ++k) first[k + 1] += first[k];
+  std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+  for(std::uint32_t i = 0; i < n; ++i) place(i, next[key(i)]++);
+  return first;
+}
+
 } // namespace internal
 } // namespace Lex_optimal_chains
 } // namespace CGAL
