@@ -114,8 +114,14 @@ public:
     twin_.assign(3 * nf, UINT32_MAX);
     if(pair_twins_by_vertices(vertex_positions.size()) < 3 * nf) {
       // non-manifold edges (four or more boundary facets): turn around them through the
-      // inside cells
-      const Facet_table table(keys, cells.size());
+      // inside cells. The facet met there has its half-edge on that edge unpaired too, so the
+      // table holds only the facets with an unpaired half-edge (a few, not all of them: a
+      // table of all the facets cost 32 MB of fresh pages at 1M points)
+      std::vector<std::uint32_t> unpaired; // positions (in memory order) of these facets
+      for(std::uint32_t k = 0; k < nf; ++k)
+        if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)
+          unpaired.push_back(k);
+      const Facet_table table(keys, unpaired, cells.size());
       for(std::size_t k = 0; k < nf; ++k)
         for(int e = 0; e < 3; ++e) {
           const std::uint32_t h = std::uint32_t(3 * k + e);
@@ -288,18 +294,20 @@ private:
     bool is_inside(const Cell* c) const { return inside[cells.index(c)]; }
   };
 
-  // Facet key -> position in the memory order, by open addressing with a monotone hash (keys
-  // are spread evenly over [0, 4 * cells), and locality is kept).
+  // Facet key -> position in the memory order, for the facets at the positions `which`, by
+  // open addressing with a monotone hash (keys are spread over [0, 4 * cells), and locality
+  // is kept).
   class Facet_table
   {
   public:
-    Facet_table(const std::vector<std::uint32_t>& keys, std::size_t number_of_cells)
+    Facet_table(const std::vector<std::uint32_t>& keys, const std::vector<std::uint32_t>& which,
+                std::size_t number_of_cells)
       : key_range_(4 * std::uint64_t(number_of_cells))
     {
       std::size_t slots = 16;
-      while(slots < 2 * keys.size()) slots *= 2;
+      while(slots < 2 * which.size()) slots *= 2;
       table_.assign(slots, Slot{empty_key, 0});
-      for(std::size_t k = 0; k < keys.size(); ++k) {
+      for(const std::uint32_t k : which) {
         std::size_t h = hash(keys[k]);
         while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
         table_[h] = Slot{keys[k], std::uint32_t(k)};
