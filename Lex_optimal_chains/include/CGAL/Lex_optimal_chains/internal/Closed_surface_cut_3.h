@@ -97,6 +97,8 @@ public:
   // the sorted facets between different components of the contraction
   const Graph& graph() const { return *graph_; }
   void release_graph() { graph_.reset(); }
+  // the sorted facets, given away (the graph keeps none)
+  std::vector<Dual_edge_record> release_records() { return graph_->release_records(); }
   // per cell position: the cell across its largest facet, or the cell itself if not contracted
   const std::vector<std::uint32_t>& across() const { return across_; }
   Union_find& sets() { return sets_; }
@@ -420,22 +422,23 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
   // The cut: when the smallest edge joins two components of the contraction, the inside is a
   // union of components and every facet of the cut is among the sorted facets; otherwise
   // the facets between inside and outside cells are sorted anew.
+  // The cut is about as large as the sorted facets: it is filtered out of them in place (a
+  // copy would take as much fresh memory again, whose first touch is the larger cost).
   std::vector<Dual_edge_record> result;
-  std::unique_ptr<Graph> resorted;
   if(smallest.contraction) {
     contracted.release_graph();
-    resorted.reset(new Graph(contracted.triangulation(), contracted.cells(), [](double) { return true; },
-                             [&inside](std::uint32_t a, int, std::uint32_t b) { return inside[a] != inside[b]; }));
+    result = Graph(contracted.triangulation(), contracted.cells(), [](double) { return true; },
+                   [&inside](std::uint32_t a, int, std::uint32_t b) { return inside[a] != inside[b]; })
+               .release_records();
+  } else {
+    result = contracted.release_records();
   }
-  const auto& records = resorted ? resorted->records() : contracted.graph().records();
   auto is_cut = [&inside](const Dual_edge_record& r) {
     return inside[Graph::owner_position(r)] != inside[Graph::other_position(r)];
   };
-  // counted first: the cut is about as large as the sorted facets, and growing it would hold
-  // one and a half times its size at the peak of memory
-  result.reserve(std::size_t(std::count_if(records.begin(), records.end(), is_cut)));
-  for(std::size_t t = records.size(); t-- > 0;)
-    if(is_cut(records[t])) result.push_back(records[t]);
+  result.erase(std::remove_if(result.begin(), result.end(), [&](const Dual_edge_record& r) { return !is_cut(r); }),
+               result.end());
+  std::reverse(result.begin(), result.end()); // decreasing order
   return result;
 }
 

@@ -181,6 +181,9 @@ public:
   const Handle_index_map<Cell>& cell_positions() const { return cells_; }
   // records sorted increasingly along the triangle order
   const std::vector<Record>& records() const { return records_; }
+  // gives the records away (the graph has none afterwards), for a caller that filters them
+  // in place rather than into fresh memory
+  std::vector<Record> release_records() { return std::move(records_); }
 
   std::uint32_t position(Cell_handle c) const { return cells_.index(&*c); }
   Cell_handle cell(std::uint32_t position) const
