@@ -431,7 +431,7 @@ std::vector<std::pair<Facet, std::int64_t>> full_algorithm_10(const DT& dt, cons
 {
   using Graph = LOC::internal::Sorted_dual_graph_3<DT>;
   using Value = typename Arithmetic::Value;
-  const Graph graph(dt, [](double) { return true; });
+  Graph graph(dt, [](double) { return true; });
   LOC::internal::Record_values<Value> gamma0(graph.number_of_cells());
   for(const auto& fk : input) {
     const auto code = graph.record_code(fk.first.first, fk.first.second);
@@ -445,9 +445,8 @@ std::vector<std::pair<Facet, std::int64_t>> full_algorithm_10(const DT& dt, cons
   dt.incident_cells(dt.infinite_vertex(), std::back_inserter(hull));
   for(const Cell_handle& c : hull) infinite.push_back(graph.position(c));
   auto sets = LOC::internal::sets_with_infinite_node<Arithmetic>(graph.number_of_cells(), infinite);
-  auto chain = LOC::internal::lexicographic_homologous_chain<Arithmetic>(graph, sets, gamma0, relative,
-                                                                         [](double) { return true; });
-  LOC::internal::record_indices_to_codes(graph, chain);
+  const auto chain = LOC::internal::lexicographic_homologous_chain<Arithmetic>(graph, sets, gamma0, relative,
+                                                                               [](double) { return true; });
   std::vector<std::pair<Facet, std::int64_t>> result;
   LOC::Open_surface_report report;
   LOC::internal::write_chain<Arithmetic>(dt, graph.cell_positions(), chain, std::back_inserter(result), report);

@@ -86,32 +86,23 @@ oriented_facet(const Triangulation& dt, typename Triangulation::Vertex_handle a,
   return {typename Triangulation::Facet(cell, f), outward};
 }
 
-// Replaces the record indices of `chain` by the codes of the records (owner position << 2 |
-// facet index), which do not need the records any more.
-template <class Graph, class Value>
-void record_indices_to_codes(const Graph& graph, std::vector<std::pair<std::size_t, Value>>& chain)
-{
-  for(auto& entry : chain) entry.first = graph.records()[entry.first].owner;
-}
-
-// Writes the chain given as (record code, coefficient) to `out` as (facet, coefficient) with a
-// positive coefficient: the facet is oriented outward of the owner for a positive coefficient,
-// of the other cell for a negative one.
+// Writes the chain of `lexicographic_homologous_chain()` (record codes and coefficients) to
+// `out` as (facet, coefficient) with a positive coefficient: the facet is oriented outward of
+// the owner for a positive coefficient, of the other cell for a negative one.
 template <class Arithmetic, class Triangulation, class OutputIterator>
 void write_chain(const Triangulation& dt, const Handle_index_map<typename Triangulation::Cell>& cells,
-                 const std::vector<std::pair<std::size_t, typename Arithmetic::Value>>& chain, OutputIterator out,
-                 Open_surface_report& report)
+                 const std::vector<Dual_edge_record>& chain, OutputIterator out, Open_surface_report& report)
 {
   using Facet = typename Triangulation::Facet;
   auto& container = const_cast<typename Triangulation::Triangulation_data_structure&>(dt.tds()).cells();
   report.number_of_facets = chain.size();
   for(std::size_t i = 0; i < chain.size(); ++i) {
-    if(i + 8 < chain.size()) prefetch_object(cells.element(std::uint32_t(chain[i + 8].first >> 2)));
-    const auto& entry = chain[i];
+    if(i + 8 < chain.size()) prefetch_object(cells.element(chain[i + 8].owner >> 2));
+    const Dual_edge_record& entry = chain[i];
     const auto owner =
-      container.iterator_to(*const_cast<typename Triangulation::Cell*>(cells.element(std::uint32_t(entry.first >> 2))));
-    const int j = int(entry.first & 3);
-    const std::int64_t k = Arithmetic::to_integer(entry.second);
+      container.iterator_to(*const_cast<typename Triangulation::Cell*>(cells.element(entry.owner >> 2)));
+    const int j = int(entry.owner & 3);
+    const std::int64_t k = Arithmetic::to_integer(chain_coefficient<Arithmetic>(entry));
     if(k != 1 && k != -1) ++report.number_of_multiple_facets;
     if(k > 0) *out++ = std::make_pair(Facet(owner, j), k);
     else *out++ = std::make_pair(Facet(owner->neighbor(j), owner->neighbor(j)->index(owner)), -k);
@@ -182,11 +173,11 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
               << graph.records().size() << " of " << report.number_of_triangles
               << " triangles between components or with a non-zero intersection product in " << report.order_seconds
               << " s\n";
-  auto chain = lexicographic_homologous_chain<Arithmetic>(
-    graph, contracted.sets(), gamma0, relative, Stage_progress{&callback, progress_from + 0.7 * span, 1.0});
-  // the disjoint sets and the sorted facets freed before the output grows: peak memory
+  // the chain is written over the sorted facets
+  const std::vector<Dual_edge_record> chain = lexicographic_homologous_chain<Arithmetic>(
+    contracted.graph(), contracted.sets(), gamma0, relative, Stage_progress{&callback, progress_from + 0.7 * span, 1.0});
+  // the disjoint sets and the graph freed before the output grows: peak memory
   contracted.release_sets();
-  record_indices_to_codes(graph, chain);
   contracted.release_graph();
   report.optimal_chain_seconds = watch.lap();
   if(verbose)

@@ -25,6 +25,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Largest_facets_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
@@ -106,27 +107,35 @@ typename Arithmetic::Value intersection_product(typename Arithmetic::Value gamma
   return Arithmetic::add(Arithmetic::add(gamma0, g2), Arithmetic::negate(g1));
 }
 
+// The coefficient of a triangle of a chain returned by `lexicographic_homologous_chain()`.
+template <class Arithmetic>
+typename Arithmetic::Value chain_coefficient(const Dual_edge_record& entry)
+{
+  return typename Arithmetic::Value(std::int64_t(entry.key));
+}
+
 // Algorithm 10 on the sorted records of `graph`, from the disjoint sets `sets` (the cells
 // alone, or already linked along edges of the maximum spanning forest: see
 // `Contracted_homologous_graph_3`). `gamma0` holds Gamma0 on records (in their orientation);
 // the records in `relative` (the triangles of B) are not edges of the dual graph. Returns the
-// optimal chain as (record index, coefficient) in decreasing order.
+// optimal chain in decreasing order, each triangle as a record whose `owner` is its code
+// (owner position << 2 | facet index) and whose `key` holds its coefficient
+// (`chain_coefficient()`). The chain is written over the records of `graph`, which keeps
+// none: the entry of rank w over the record of rank w from the end, which the pass has read
+// already (after a contraction, most records are in the chain, and a separate array would
+// take as much fresh memory again, at the peak of memory).
 template <class Arithmetic, class Graph, class Progress>
-std::vector<std::pair<std::size_t, typename Arithmetic::Value>>
-lexicographic_homologous_chain(const Graph& graph, Augmented_union_find<Arithmetic>& sets,
-                               const Record_values<typename Arithmetic::Value>& gamma0,
-                               const Record_values<std::uint8_t>& relative, const Progress& progress)
+std::vector<Dual_edge_record> lexicographic_homologous_chain(Graph& graph, Augmented_union_find<Arithmetic>& sets,
+                                                             const Record_values<typename Arithmetic::Value>& gamma0,
+                                                             const Record_values<std::uint8_t>& relative,
+                                                             const Progress& progress)
 {
   using Value = typename Arithmetic::Value;
   const Value zero = Arithmetic::zero();
   const bool is_relative = !relative.values().empty();
-  std::vector<std::pair<std::size_t, Value>> result;
-  const auto& records = graph.records();
+  std::vector<Dual_edge_record> records = graph.release_records();
   const std::size_t m = records.size();
-  // at most one entry per record; the pages beyond the result are never touched (after a
-  // contraction, most records are in the result, and growing it would hold 1.5 times its
-  // size at the peak of memory)
-  result.reserve(m);
+  std::size_t chain_size = 0;
   constexpr std::size_t ahead = 16;
   for(std::size_t t = 0; t < m; ++t) {
     if((t & 0xfffff) == 0 && !progress(double(t) / double(m)))
@@ -136,19 +145,26 @@ lexicographic_homologous_chain(const Graph& graph, Augmented_union_find<Arithmet
       sets.prefetch(Graph::owner_position(next));
       sets.prefetch(Graph::other_position(next));
     }
-    const std::size_t index = m - 1 - t;
-    const auto& r = records[index];
+    const Dual_edge_record r = records[m - 1 - t];
     if(is_relative && relative.contains(r.owner)) continue; // a triangle of B: no dual edge
     const auto [r1, g1] = sets.find(Graph::owner_position(r));
     const auto [r2, g2] = sets.find(Graph::other_position(r));
     const Value alpha = intersection_product<Arithmetic>(gamma0.get(r.owner, zero), g1, g2);
     if(r1 == r2) {
-      if(alpha != zero) result.emplace_back(index, alpha);
+      if(alpha != zero) { // chain_size <= t: that record was read
+        Dual_edge_record& entry = records[m - 1 - chain_size++];
+        entry.owner = r.owner;
+        entry.other = 0;
+        entry.key = std::uint64_t(std::int64_t(alpha));
+      }
     } else {
       sets.link_roots(r1, r2, alpha);
     }
   }
-  return result;
+  // the entries, from the end backwards, moved to the front in decreasing order
+  records.erase(records.begin(), records.begin() + std::ptrdiff_t(m - chain_size));
+  std::reverse(records.begin(), records.end());
+  return records;
 }
 
 // The dual graph of Algorithm 10 after the contraction of internal/Largest_facets_3.h.
@@ -221,6 +237,7 @@ public:
 
   // the sorted facets that Algorithm 10 must process
   const Graph& graph() const { return *graph_; }
+  Graph& graph() { return *graph_; }
   // the disjoint sets after the contraction, for `lexicographic_homologous_chain()`
   Augmented_union_find<Arithmetic>& sets() { return sets_; }
   void release_sets() { sets_ = Augmented_union_find<Arithmetic>(); }
