@@ -76,8 +76,11 @@ void test_augmented_union_find(CGAL::Random& rng)
     std::vector<std::uint32_t> root(n);
     for(int x = 0; x < n; ++x) root[x] = parent[x] == std::uint32_t(x) ? x : root[parent[x]];
     LOC::internal::Augmented_union_find<Arithmetic> sets(n);
-    sets.set_forest([&](std::uint32_t x) { return parent[x]; },
-                    [&](std::uint32_t x) { return Arithmetic::from_integer(link[x]); });
+    for(int x = 0; x < n; ++x) sets.set_parent(std::uint32_t(x), parent[x]);
+    sets.set_forest_of_parents([&](std::uint32_t x, std::uint32_t p) {
+      assert(p == parent[x]);
+      return Arithmetic::from_integer(link[x]);
+    });
     assert(sets.is_forest());
     const bool flat = trial % 2 == 0;
     if(flat) sets.flatten();
@@ -86,27 +89,41 @@ void test_augmented_union_find(CGAL::Random& rng)
       assert(f.first == root[x] && f.second == Arithmetic::from_integer(potential[x]));
     }
   }
-  // parent pointers with a cycle (parents in any order otherwise) are refused: find() would
-  // loop forever
-  for(int trial = 0; trial < 20; ++trial) {
+  // parent pointers with a cycle of three elements or more (parents in any order otherwise) are
+  // refused: find() would loop forever; a cycle of two (two cells whose largest facet is the
+  // same) is broken at its element of larger index, which becomes a root
+  auto forest_of = [](const std::vector<std::uint32_t>& parent) {
+    LOC::internal::Augmented_union_find<Arithmetic> sets(parent.size());
+    for(std::uint32_t x = 0; x < parent.size(); ++x) sets.set_parent(x, parent[x]);
+    sets.set_forest_of_parents([](std::uint32_t, std::uint32_t) { return Arithmetic::from_integer(1); });
+    return sets;
+  };
+  int refused_cycles = 0, broken_pairs = 0;
+  for(int trial = 0; trial < 40; ++trial) {
     const int n = rng.get_int(3, 40);
     std::vector<std::uint32_t> order(n), parent(n);
     for(int x = 0; x < n; ++x) order[x] = std::uint32_t(x);
     std::shuffle(order.begin(), order.end(), std::mt19937(trial));
     for(int i = 0; i < n; ++i) parent[order[i]] = i == 0 ? order[0] : order[rng.get_int(0, i)]; // a tree
-    LOC::internal::Augmented_union_find<Arithmetic> tree(n);
-    tree.set_forest([&](std::uint32_t x) { return parent[x]; }, [&](std::uint32_t) { return Arithmetic::from_integer(1); });
-    assert(tree.is_forest());
-    parent[order[0]] = order[n - 1]; // the root under a leaf or another element: a cycle
-    LOC::internal::Augmented_union_find<Arithmetic> cyclic(n);
+    assert(forest_of(parent).is_forest());
+    const std::uint32_t leaf = trial % 2 == 0 ? order[n - 1] : order[1]; // order[1] is a child of the root
+    parent[order[0]] = leaf; // the root under another element: a cycle
+    std::size_t length = 1;
+    for(std::uint32_t x = leaf; x != order[0]; x = parent[x]) ++length;
     const auto behaviour = CGAL::set_error_behaviour(CGAL::THROW_EXCEPTION);
     bool refused = false;
     try {
-      cyclic.set_forest([&](std::uint32_t x) { return parent[x]; }, [&](std::uint32_t) { return Arithmetic::from_integer(1); });
+      auto sets = forest_of(parent);
+      assert(length == 2);
+      const std::uint32_t high = (std::max)(order[0], leaf), low = (std::min)(order[0], leaf);
+      assert(sets.find(high).first == high && sets.find(low).first == high);
+      ++broken_pairs;
     } catch(const CGAL::Failure_exception&) { refused = true; }
     CGAL::set_error_behaviour(behaviour);
-    assert(refused);
+    assert(refused == (length >= 3));
+    if(refused) ++refused_cycles;
   }
+  assert(refused_cycles > 0 && broken_pairs > 0);
 }
 
 // ----- chains as maps over canonically oriented simplices -----------------------------------

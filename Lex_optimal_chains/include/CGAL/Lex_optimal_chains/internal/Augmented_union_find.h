@@ -115,18 +115,26 @@ public:
     return r2;
   }
 
-  // Builds the sets of a forest given by parent pointers: `parent(x)` is the parent of x
-  // (x itself for a root) and `value(x)` the value of the path from x to its parent. All
-  // elements must be alone before. The ranks stay 0: they only balance the later links, and
-  // every value stays right whatever they are.
-  template <class Parent, class LinkValue>
-  void set_forest(const Parent& parent, const LinkValue& value)
+  // Sets the parent of `x` (which must be alone) to `p`, for `set_forest_of_parents()`.
+  void set_parent(Index x, Index p)
+  {
+    CGAL_precondition(nodes_[x].parent() == x && p < nodes_.size());
+    nodes_[x].set(p, Arithmetic::zero());
+  }
+
+  // Builds the sets of the parents given by `set_parent()`, which form a forest but for cycles
+  // of two elements (x -> y -> x), broken at the element of larger index, which becomes a
+  // root; `value(x, p)` is the value of the path from x to its parent p. The ranks stay 0: they
+  // only balance the later links, and every value stays right whatever they are.
+  template <class LinkValue>
+  void set_forest_of_parents(const LinkValue& value)
   {
     for(Index x = 0; x < nodes_.size(); ++x) {
-      CGAL_precondition(nodes_[x].parent() == x);
-      const Index p = parent(x);
-      CGAL_precondition(p < nodes_.size());
-      if(p != x) nodes_[x].set(p, value(x));
+      const Index p = nodes_[x].parent();
+      if(p == x) continue;
+      // p < x: p's parent is final already, and it is x only if p is the smaller of a pair
+      if(p < x && nodes_[p].parent() == x) nodes_[x].set(x, Arithmetic::zero());
+      else nodes_[x].set(p, value(x, p));
     }
     CGAL_assertion(is_forest()); // a cycle would make find() loop forever
   }
@@ -159,7 +167,7 @@ public:
   // Points every element directly at its root: a later `find` reads two nodes. Full path
   // compression, top down: each walk stops at the first element that points at its root
   // already, so every element is written once, whatever the depth of the trees (those of
-  // `set_forest()` can be hundreds deep).
+  // `set_forest_of_parents()` can be hundreds deep).
   void flatten()
   {
     std::vector<Index> path;

@@ -204,19 +204,17 @@ public:
         terminal[owner] = true;
         terminal[cells.index(&*cells.element(owner)->neighbor(int(entry.first & 3)))] = true;
       }
-      std::vector<std::uint32_t> across;
-      exact_comparisons_ = cells_across_largest_facets(dt, cells, terminal, across, half(0.0));
-      // The contractions are the edges of a forest (the only cycles of `across` are the pairs
-      // of cells across the same facet, whose cell of higher position is taken as the root):
-      // each cell gets the cell across its largest facet as parent, with the value that
-      // Algorithm 10 gives to the link of two single cells: Gamma0 of the record from the
-      // owner to the other cell, negated from the other cell to the owner.
-      auto parent = [&across](std::uint32_t c) {
-        const std::uint32_t d = across[c];
-        return d < c && across[d] == c ? c : d;
-      };
-      sets_.set_forest(parent, [&](std::uint32_t c) {
-        const std::uint32_t d = across[c];
+      // The cell across the largest facet of each cell is written straight into the sets as
+      // its parent (no array of its own: fresh memory costs more than the pass that fills
+      // it). The contractions are the edges of a forest (the only cycles are the pairs of
+      // cells across the same facet, whose cell of higher position is taken as the root), and
+      // each link gets the value that Algorithm 10 gives to the link of two single cells:
+      // Gamma0 of the record from the owner to the other cell, negated from the other cell to
+      // the owner.
+      exact_comparisons_ = for_each_cell_across_largest_facet(
+        dt, cells, terminal, [this](std::uint32_t c, std::uint32_t d) { if(d != c) sets_.set_parent(c, d); },
+        half(0.0));
+      sets_.set_forest_of_parents([&](std::uint32_t c, std::uint32_t d) {
         if(!gamma0.may_contain(c) && !gamma0.may_contain(d)) return zero; // no record of Gamma0 is theirs
         const std::pair<std::uint32_t, int> facet = Graph::facet_between(dt, cells, c, d);
         const Value v = gamma0.get((facet.first << 2) | std::uint32_t(facet.second), zero);

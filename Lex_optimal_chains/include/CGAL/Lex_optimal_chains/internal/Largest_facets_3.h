@@ -209,19 +209,18 @@ struct Cell_facets_3
   }
 };
 
-// Fills `across[p]`, for the cell at position `p` (in the numbering `cells` of the cell
-// container), with the position of the cell across its largest facet, and with `p` itself
-// for the cells with `terminal[p]` (they are not contracted) and the infinite cells.
+// Calls `found(p, q)` for the cell at position `p` (in the numbering `cells` of the cell
+// container), in increasing p, with the position q of the cell across its largest facet, or
+// q = p for the cells with `terminal[p]` (they are not contracted) and the infinite cells.
 // Returns the number of comparisons made exactly. `progress(fraction)` returns false to cancel.
-template <class Triangulation, class Progress>
-std::size_t cells_across_largest_facets(const Triangulation& dt,
-                                        const Handle_index_map<typename Triangulation::Cell>& cells,
-                                        const std::vector<bool>& terminal, std::vector<std::uint32_t>& across,
-                                        const Progress& progress)
+template <class Triangulation, class Found, class Progress>
+std::size_t for_each_cell_across_largest_facet(const Triangulation& dt,
+                                               const Handle_index_map<typename Triangulation::Cell>& cells,
+                                               const std::vector<bool>& terminal, const Found& found,
+                                               const Progress& progress)
 {
   const auto infinite = dt.infinite_vertex();
   const auto& container = dt.tds().cells();
-  across.resize(cells.size());
   std::size_t exact = 0;
   std::uint32_t pos = 0;
   auto ahead = container.begin(); // the vertices of the cells a few steps ahead are fetched early
@@ -234,12 +233,26 @@ std::size_t cells_across_largest_facets(const Triangulation& dt,
     if((pos & 0xfffff) == 0 && !progress(double(pos) / double(cells.size())))
       throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
     const auto& c = *it;
-    across[pos] = pos;
-    if(terminal[pos] || c.has_vertex(infinite)) continue;
+    if(terminal[pos] || c.has_vertex(infinite)) {
+      found(pos, pos);
+      continue;
+    }
     Cell_facets_3 facets(c);
-    across[pos] = cells.index(&*c.neighbor(facets.largest(exact)));
+    found(pos, cells.index(&*c.neighbor(facets.largest(exact))));
   }
   return exact;
+}
+
+// Fills `across[p]` with the q of `for_each_cell_across_largest_facet()`.
+template <class Triangulation, class Progress>
+std::size_t cells_across_largest_facets(const Triangulation& dt,
+                                        const Handle_index_map<typename Triangulation::Cell>& cells,
+                                        const std::vector<bool>& terminal, std::vector<std::uint32_t>& across,
+                                        const Progress& progress)
+{
+  across.resize(cells.size());
+  return for_each_cell_across_largest_facet(
+    dt, cells, terminal, [&across](std::uint32_t p, std::uint32_t q) { across[p] = q; }, progress);
 }
 
 // Fills the order fields of a report (closed or open surfaces) from a contracted dual graph
