@@ -165,12 +165,11 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
 
   Contracted_homologous_graph_3<Arithmetic, Triangulation> contracted(
     dt, cells, infinite, gamma0, relative, Stage_progress{&callback, progress_from, progress_from + 0.7 * span});
-  const Graph& graph = contracted.graph();
   report_order_statistics(contracted, watch.lap(), report);
   if(verbose)
     std::cerr << "Lex_optimal_chains: contracted the cells across their largest facets ("
               << contracted.number_of_exact_comparisons() << " comparisons made exactly), then ordered the "
-              << graph.records().size() << " of " << report.number_of_triangles
+              << contracted.graph().records().size() << " of " << report.number_of_triangles
               << " triangles between components or with a non-zero intersection product in " << report.order_seconds
               << " s\n";
   // the chain is written over the sorted facets

@@ -122,7 +122,7 @@ public:
         if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)
           unpaired.push_back(k);
       const Facet_table table(keys, unpaired, cells.size());
-      for(std::size_t k = 0; k < nf; ++k)
+      for(const std::uint32_t k : unpaired)
         for(int e = 0; e < 3; ++e) {
           const std::uint32_t h = std::uint32_t(3 * k + e);
           if(twin_[h] != UINT32_MAX) continue;
