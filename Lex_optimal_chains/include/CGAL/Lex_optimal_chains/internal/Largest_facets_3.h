@@ -17,11 +17,13 @@
 // whole spanning tree (6,125,665 of its 6,126,529 edges for 1M points on a torus), and only
 // the facets left between different components (18% of them) need to be sorted.
 //
-// The four facets of a cell are compared with certified double evaluations
-// (internal/Triangle_order_3.h). Two certainly obtuse facets whose longest edge is the same
-// edge of the cell have exactly the same R_B (the common case of a near tie: the two facets
-// around the longest edge of a flat cell) and are compared by R_C. A comparison that the
-// error bounds leave undecided is made exactly.
+// The four facets of a cell are first compared from the six squared edge lengths alone, in
+// double with certified error bounds (`certified_largest_facet()`); on the rare cells where a
+// bound leaves a comparison undecided, facet by facet with the evaluations of
+// internal/Triangle_order_3.h (`Cell_facets_3`), and exactly when those cannot decide. Two
+// certainly obtuse facets whose longest edge is the same edge of the cell have exactly the
+// same R_B (the common case of a near tie: the two facets around the longest edge of a flat
+// cell) and are compared by R_C.
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
@@ -209,6 +211,94 @@ struct Cell_facets_3
   }
 };
 
+// The largest facet of the cell with vertices `point` (facet j is opposite point j), or -1
+// when a comparison is too close for the error bounds (then `Cell_facets_3::largest()`
+// decides). Everything comes from the six squared edge lengths l, computed as in
+// `Cell_facets_3` (each within 6u of its value, u = 2^-53): for the facet with vertices p, q,
+// r and l0 = |qr|^2, l1 = |pr|^2, l2 = |pq|^2,
+//   d = |pq x pr|^2 = l1 l2 - t^2 / 4, with t = 2 pq.pr = l1 + l2 - l0   (Lagrange's identity),
+//   R_C^2 = l0 l1 l2 / (4 d),   R_B^2 = max(l) / 4 if obtuse, R_C^2 otherwise.
+// Error analysis, with S = l0 + l1 + l2: t is within 8.01u S of its value, so t^2 / 4 is within
+// 4.26u S^2; l1 l2 is within 13.01u l1 l2 <= 3.26u S^2; d is then within 7.52u S^2 + u|d|,
+// which is below e d with e = 16u S^2 / d. When e < 1/4, R_C^2 = c (1 + eta) for the computed
+// c, with |eta| <= 2 (e + 32u) (the products and the quotient add 21u), as for
+// `approximate_radii_from_edges()`; R_B^2 of a certainly obtuse facet is within 16u. The
+// lengths are kept within [1e-120, 1e120], so that no product leaves the normal range. This
+// uses no cross product and one pass over the facets with few branches: it decides all but a
+// few cells in a million on sampled surfaces.
+inline int certified_largest_facet(const Coordinates_3 (&point)[4])
+{
+  constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  // edge e joins the vertices first[e] < second[e]
+  static constexpr int first[6] = {0, 0, 0, 1, 1, 2}, second[6] = {1, 2, 3, 2, 3, 3};
+  double l[6];
+  for(int e = 0; e < 6; ++e) {
+    const Coordinates_3 &a = point[first[e]], &b = point[second[e]];
+    const double x = b[0] - a[0], y = b[1] - a[1], z = b[2] - a[2];
+    l[e] = x * x + y * y + z * z;
+  }
+  double lowest = l[0], highest = l[0];
+  for(int e = 1; e < 6; ++e) {
+    lowest = (std::min)(lowest, l[e]);
+    highest = (std::max)(highest, l[e]);
+  }
+  if(!(lowest > 1e-120 && highest < 1e120)) return -1; // also NaN
+  // facet j, with p = (j+1)&3, q = (j+2)&3, r = (j+3)&3: the edges pq, pr and qr
+  static constexpr int edge_pq[4] = {3, 5, 2, 0}, edge_pr[4] = {4, 1, 4, 1}, edge_qr[4] = {5, 2, 0, 3};
+  double rb2[4], rb_error[4], rc2[4], rc_error[4], longest[4];
+  int longest_edge[4]; // the cell edge that is the longest edge of a certainly obtuse facet, else 6 + j
+  for(int j = 0; j < 4; ++j) {
+    const double l0 = l[edge_qr[j]], l1 = l[edge_pr[j]], l2 = l[edge_pq[j]];
+    double m = l0;
+    int e = edge_qr[j];
+    if(l1 > m) { m = l1; e = edge_pr[j]; }
+    if(l2 > m) { m = l2; e = edge_pq[j]; }
+    longest[j] = m;
+    const double sum = l0 + l1 + l2, others = sum - m;
+    const double t = l1 + l2 - l0;
+    const double d = l1 * l2 - 0.25 * (t * t);
+    const double c = l0 * (l1 * (l2 / (4 * d)));
+    const double e_d = 16 * u * (sum * sum) / d;
+    rc2[j] = c;
+    rc_error[j] = d > 0 && e_d < 0.25 && c > 1e-250 && c < 1e250 ? 2 * (e_d + 32 * u) : inf;
+    const bool obtuse = m > others * (1 + 64 * u), acute = m < others * (1 - 64 * u);
+    rb2[j] = obtuse ? m * 0.25 : c;
+    rb_error[j] = obtuse ? 16 * u : (acute ? rc_error[j] : inf);
+    longest_edge[j] = obtuse ? e : 6 + j;
+  }
+  int best = 0;
+  for(int j = 1; j < 4; ++j)
+    if(rb2[j] > rb2[best] || (rb2[j] == rb2[best] && rc2[j] < rc2[best])) best = j;
+  // A facet whose longest edge is below sqrt(3/4) times the longest edge of the cell cannot be
+  // the largest (see `Cell_facets_3::largest()`): it is smaller than the facets on that edge.
+  const double too_short = highest * (3 * (1 - 1e-12)) / (4 * (1 + 1e-12));
+  for(int j = 0; j < 4; ++j) {
+    if(j == best || longest[j] < too_short) continue;
+    // Every test below is false on an infinite or NaN operand, which leaves the cell undecided.
+    if(longest_edge[j] == longest_edge[best]) { // the same R_B exactly: the smaller R_C is larger
+      if(!(rc2[best] * (1 + rc_error[best]) < rc2[j] * (1 - rc_error[j]))) return -1;
+    } else if(!(rb2[best] * (1 - rb_error[best]) > rb2[j] * (1 + rb_error[j]))) {
+      return -1;
+    }
+  }
+  return best;
+}
+
+// The largest facet of the finite cell `c`; `exact` counts the comparisons made exactly.
+template <class Cell>
+int largest_facet(const Cell& c, std::size_t& exact)
+{
+  Coordinates_3 point[4];
+  for(int k = 0; k < 4; ++k) {
+    const auto& q = c.vertex(k)->point();
+    point[k] = Coordinates_3{{q.x(), q.y(), q.z()}};
+  }
+  const int fast = certified_largest_facet(point);
+  if(fast >= 0) return fast;
+  return Cell_facets_3(c).largest(exact);
+}
+
 // Calls `found(p, q)` for the cell at position `p` (in the numbering `cells` of the cell
 // container), in increasing p, with the position q of the cell across its largest facet, or
 // q = p for the cells with `terminal[p]` (they are not contracted) and the infinite cells.
@@ -237,8 +327,7 @@ std::size_t for_each_cell_across_largest_facet(const Triangulation& dt,
       found(pos, pos);
       continue;
     }
-    Cell_facets_3 facets(c);
-    found(pos, cells.index(&*c.neighbor(facets.largest(exact))));
+    found(pos, cells.index(&*c.neighbor(largest_facet(c, exact))));
   }
   return exact;
 }
