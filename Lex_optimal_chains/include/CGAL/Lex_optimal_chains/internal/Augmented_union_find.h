@@ -13,6 +13,7 @@
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
+#include <CGAL/Lex_optimal_chains/internal/Zeroed_bytes.h>
 
 #include <CGAL/assertions.h>
 
@@ -76,7 +77,7 @@ public:
       throw Input_error(Input_error_code::TOO_LARGE, "too many elements for the augmented disjoint sets");
     nodes_.resize(n);
     for(std::size_t i = 0; i < n; ++i) nodes_[i].set(Index(i), Arithmetic::zero());
-    rank_.assign(n, 0);
+    rank_.assign(n); // zero, untouched until a root is linked
   }
 
   std::size_t size() const { return nodes_.size(); }
@@ -202,7 +203,7 @@ public:
 
 private:
   std::vector<Node> nodes_;
-  std::vector<std::uint8_t> rank_;
+  Zeroed_bytes rank_; // at most log2 n < 256
 };
 
 } // namespace internal

@@ -5,6 +5,7 @@
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H
 
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
+#include <CGAL/Lex_optimal_chains/internal/Zeroed_bytes.h>
 
 #include <CGAL/assertions.h>
 
@@ -19,7 +20,8 @@ namespace internal {
 
 // Disjoint sets over the dense indices [0, n): path halving and union by rank.
 // Ranks (at most log2 n < 256) are bytes in a separate array, so that `find` touches one
-// 32-bit word per step and the structure costs 5 bytes per element.
+// 32-bit word per step; the bytes of the elements that are never linked as roots are never
+// touched (internal/Zeroed_bytes.h).
 class Union_find
 {
 public:
@@ -31,7 +33,7 @@ public:
   {
     parent_.resize(n);
     std::iota(parent_.begin(), parent_.end(), Index(0));
-    rank_.assign(n, 0);
+    rank_.assign(n); // zero, untouched until a root is linked
   }
 
   std::size_t size() const { return parent_.size(); }
@@ -90,7 +92,7 @@ public:
 
 private:
   std::vector<Index> parent_;
-  std::vector<std::uint8_t> rank_;
+  Zeroed_bytes rank_;
 };
 
 } // namespace internal
