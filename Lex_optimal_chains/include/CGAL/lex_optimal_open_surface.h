@@ -267,36 +267,46 @@ public:
     triangles_.push_back(t); // by dense vertex numbers, renumbered by `finish()`
   }
 
-  // The points of the used vertices (sorted) and the triangles on them (sorted); the number
-  // of triangles dropped because they touch a dropped vertex.
-  void finish(std::vector<Point>& points, std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
+  // Copies the points of the vertices that the triangles use, after the last `add()`: the
+  // triangulation can be freed afterwards, before `finish()` (that is where memory peaks).
+  void take_points()
   {
-    // the used vertices, numbered in the order of their points; the points are copied next to
-    // their vertex numbers, so that the sort reads contiguous memory, not the vertices
     constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> number(dense_.size(), unused);
-    struct Used_vertex
-    {
-      Point point;
-      std::uint32_t vertex; // dense number
-    };
-    std::vector<Used_vertex> used;
+    number_.assign(dense_.size(), unused);
+    std::size_t count = 0; // counted first: a growing vector would hold two copies at once
     for(const auto& t : triangles_)
       for(const std::uint32_t v : t)
-        if(number[v] == unused) { number[v] = 0; used.push_back({dense_.element(v)->point(), v}); }
-    std::sort(used.begin(), used.end(), [](const Used_vertex& a, const Used_vertex& b) { return a.point < b.point; });
+        if(number_[v] == unused) { number_[v] = 0; ++count; }
+    used_.reserve(count);
+    for(const auto& t : triangles_)
+      for(const std::uint32_t v : t)
+        if(number_[v] == 0) { // its first use
+          number_[v] = 1;
+          used_.push_back({dense_.element(v)->point(), v});
+        }
+  }
+
+  // The points of the used vertices (sorted) and the triangles on them (sorted); the number
+  // of triangles dropped because they touch a dropped vertex. After `take_points()`; does not
+  // read the triangulation.
+  void finish(std::vector<Point>& points, std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
+  {
+    // the used vertices, numbered in the order of their points (copied next to their vertex
+    // numbers, so that the sort reads contiguous memory)
+    std::sort(used_.begin(), used_.end(), [](const Used_vertex& a, const Used_vertex& b) { return a.point < b.point; });
     points.clear();
-    points.reserve(used.size());
-    for(std::uint32_t k = 0; k < used.size(); ++k) {
-      number[used[k].vertex] = k;
-      points.push_back(used[k].point);
+    points.reserve(used_.size());
+    for(std::uint32_t k = 0; k < used_.size(); ++k) {
+      number_[used_[k].vertex] = k;
+      points.push_back(used_[k].point);
     }
-    std::vector<Used_vertex>().swap(used);
+    std::vector<Used_vertex>().swap(used_);
     for(auto& t : triangles_) {
-      for(std::uint32_t& v : t) v = number[v];
+      for(std::uint32_t& v : t) v = number_[v];
       if(oriented_) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // keeps the orientation
       else std::sort(t.begin(), t.end());
     }
+    std::vector<std::uint32_t>().swap(number_);
     // sorted lexicographically: distributed by first vertex (a counting sort), then each
     // vertex's few triangles sorted by the other two
     triangles.assign(triangles_.size(), std::array<std::uint32_t, 3>{});
@@ -319,6 +329,13 @@ private:
   std::vector<std::uint32_t> dropped_vertices_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::size_t dropped_ = 0;
+  struct Used_vertex
+  {
+    Point point;
+    std::uint32_t vertex; // dense number
+  };
+  std::vector<Used_vertex> used_;     // by `take_points()`
+  std::vector<std::uint32_t> number_; // dense number -> number of the used vertex
 };
 
 } // namespace internal
@@ -451,6 +468,8 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     else
       LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
     watch.lap();
+    builder.take_points();
+    dt.clear(); // before the soup is sorted: peak memory
     builder.finish(soup_points, soup, report.dropped_triangles);
     if(soup.empty() && report.dropped_triangles > 0)
       throw LOC::Input_error(LOC::Input_error_code::EMPTY_RESULT,
@@ -460,8 +479,6 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
                                "boundary as a surface (for footprint_boundary(), the points must be a terrain-like "
                                "tile, a height field over their xy-footprint)");
     report.output_seconds += watch.lap(); // after the writing of the chain into the soup
-    dt.clear(); // before the mesh is built: peak memory
-    report.output_seconds += watch.lap();
   });
   LOC::internal::report_progress(callback, 1.0); // the last chance to cancel: the mesh is not modified before
   const std::size_t vertices_before = num_vertices(mesh), faces_before = num_faces(mesh);
