@@ -152,6 +152,15 @@ void check_largest_facets()
     std::sort(p.begin(), p.end());
     do check_largest_facet(p); while(std::next_permutation(p.begin(), p.end()));
   };
+  // A cell met by a random campaign on a grid with shifts of 1e-13: two obtuse facets on the
+  // same longest edge, one of them so flat (an edge of 2.5e-13) that |pq x pr|^2 from the
+  // lengths comes out negative; the lengths-only path must leave it undecided. At several
+  // scales (powers of 2: the same cell, exactly).
+  for(int e : {0, -30, 30, -200, 200}) {
+    const double s = std::ldexp(1.0, e);
+    all_orders({{Point(0, 0.25000000000025002 * s, 0.125 * s), Point(2.4999999999999999e-13 * s, 0.25000000000025002 * s, 0.125 * s),
+                 Point(1.25e-13 * s, 0.25000000000012501 * s, 0), Point(0.12500000000024999 * s, 0.25000000000025002 * s, 0)}});
+  }
   for(int i = 0; i < 200; ++i) {
     // far up and down, and so far down that products of squared lengths are subnormal
     const int far = i % 3 == 0 ? 262 : 200;

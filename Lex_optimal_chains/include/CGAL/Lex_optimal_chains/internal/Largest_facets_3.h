@@ -229,8 +229,7 @@ struct Cell_facets_3
 inline int certified_largest_facet(const Coordinates_3 (&point)[4])
 {
   constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  // edge e joins the vertices first[e] < second[e]
+    // edge e joins the vertices first[e] < second[e]
   static constexpr int first[6] = {0, 0, 0, 1, 1, 2}, second[6] = {1, 2, 3, 2, 3, 3};
   double l[6];
   for(int e = 0; e < 6; ++e) {
@@ -246,7 +245,13 @@ inline int certified_largest_facet(const Coordinates_3 (&point)[4])
   if(!(lowest > 1e-120 && highest < 1e120)) return -1; // also NaN
   // facet j, with p = (j+1)&3, q = (j+2)&3, r = (j+3)&3: the edges pq, pr and qr
   static constexpr int edge_pq[4] = {3, 5, 2, 0}, edge_pr[4] = {4, 1, 4, 1}, edge_qr[4] = {5, 2, 0, 3};
-  double rb2[4], rb_error[4], rc2[4], rc_error[4], longest[4];
+  // A facet whose longest edge is below sqrt(3/4) times the longest edge of the cell cannot be
+  // the largest (see `Cell_facets_3::largest()`): it is smaller than the facets on that edge,
+  // which are candidates.
+  const double too_short = highest * (3 * (1 - 1e-12)) / (4 * (1 + 1e-12));
+  bool candidate[4];
+  double rb2[4], rb_error[4], rc2[4], rc_error[4];
+  bool rc_known[4];
   int longest_edge[4]; // the cell edge that is the longest edge of a certainly obtuse facet, else 6 + j
   for(int j = 0; j < 4; ++j) {
     const double l0 = l[edge_qr[j]], l1 = l[edge_pr[j]], l2 = l[edge_pq[j]];
@@ -254,30 +259,30 @@ inline int certified_largest_facet(const Coordinates_3 (&point)[4])
     int e = edge_qr[j];
     if(l1 > m) { m = l1; e = edge_pr[j]; }
     if(l2 > m) { m = l2; e = edge_pq[j]; }
-    longest[j] = m;
+    candidate[j] = m >= too_short;
     const double sum = l0 + l1 + l2, others = sum - m;
     const double t = l1 + l2 - l0;
     const double d = l1 * l2 - 0.25 * (t * t);
     const double c = l0 * (l1 * (l2 / (4 * d)));
     const double e_d = 16 * u * (sum * sum) / d;
+    // known: positive, in range, with a bound (d may even come out negative on a flat facet)
+    rc_known[j] = d > 0 && e_d < 0.25 && c > 1e-250 && c < 1e250;
     rc2[j] = c;
-    rc_error[j] = d > 0 && e_d < 0.25 && c > 1e-250 && c < 1e250 ? 2 * (e_d + 32 * u) : inf;
+    rc_error[j] = 2 * (e_d + 32 * u);
     const bool obtuse = m > others * (1 + 64 * u), acute = m < others * (1 - 64 * u);
+    if(candidate[j] && !obtuse && !(acute && rc_known[j])) return -1; // R_B not known closely enough
     rb2[j] = obtuse ? m * 0.25 : c;
-    rb_error[j] = obtuse ? 16 * u : (acute ? rc_error[j] : inf);
+    rb_error[j] = obtuse ? 16 * u : rc_error[j];
     longest_edge[j] = obtuse ? e : 6 + j;
   }
-  int best = 0;
-  for(int j = 1; j < 4; ++j)
-    if(rb2[j] > rb2[best] || (rb2[j] == rb2[best] && rc2[j] < rc2[best])) best = j;
-  // A facet whose longest edge is below sqrt(3/4) times the longest edge of the cell cannot be
-  // the largest (see `Cell_facets_3::largest()`): it is smaller than the facets on that edge.
-  const double too_short = highest * (3 * (1 - 1e-12)) / (4 * (1 + 1e-12));
+  int best = -1;
+  for(int j = 0; j < 4; ++j)
+    if(candidate[j] && (best < 0 || rb2[j] > rb2[best] || (rb2[j] == rb2[best] && rc2[j] < rc2[best]))) best = j;
   for(int j = 0; j < 4; ++j) {
-    if(j == best || longest[j] < too_short) continue;
-    // Every test below is false on an infinite or NaN operand, which leaves the cell undecided.
+    if(j == best || !candidate[j]) continue;
     if(longest_edge[j] == longest_edge[best]) { // the same R_B exactly: the smaller R_C is larger
-      if(!(rc2[best] * (1 + rc_error[best]) < rc2[j] * (1 - rc_error[j]))) return -1;
+      if(!(rc_known[best] && rc_known[j] && rc2[best] * (1 + rc_error[best]) < rc2[j] * (1 - rc_error[j])))
+        return -1;
     } else if(!(rb2[best] * (1 - rb_error[best]) > rb2[j] * (1 + rb_error[j]))) {
       return -1;
     }
