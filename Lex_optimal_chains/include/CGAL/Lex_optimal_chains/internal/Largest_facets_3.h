@@ -223,13 +223,14 @@ struct Cell_facets_3
 // which is below e d with e = 16u S^2 / d. When e < 1/4, R_C^2 = c (1 + eta) for the computed
 // c, with |eta| <= 2 (e + 32u) (the products and the quotient add 21u), as for
 // `approximate_radii_from_edges()`; R_B^2 of a certainly obtuse facet is within 16u. The
-// lengths are kept within [1e-120, 1e120], so that no product leaves the normal range. This
-// uses no cross product and one pass over the facets with few branches: it decides all but a
-// few cells in a million on sampled surfaces.
+// lengths are kept within [1e-120, 1e120], so that no product leaves the normal range. A
+// facet that could be the largest and whose R_B has no such bound (nearly right, or flat
+// enough for d to lose its sign) leaves the cell undecided. This uses no cross product and
+// few branches: it leaves undecided 5 of the 6.1M cells of 1M points on a torus.
 inline int certified_largest_facet(const Coordinates_3 (&point)[4])
 {
   constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
-    // edge e joins the vertices first[e] < second[e]
+  // edge e joins the vertices first[e] < second[e]
   static constexpr int first[6] = {0, 0, 0, 1, 1, 2}, second[6] = {1, 2, 3, 2, 3, 3};
   double l[6];
   for(int e = 0; e < 6; ++e) {
