@@ -237,13 +237,10 @@ inline int certified_largest_facet(const Coordinates_3 (&point)[4])
     const Coordinates_3 &a = point[first[e]], &b = point[second[e]];
     const double x = b[0] - a[0], y = b[1] - a[1], z = b[2] - a[2];
     l[e] = x * x + y * y + z * z;
+    if(!(l[e] > 1e-120 && l[e] < 1e120)) return -1; // each one tested: also NaN
   }
-  double lowest = l[0], highest = l[0];
-  for(int e = 1; e < 6; ++e) {
-    lowest = (std::min)(lowest, l[e]);
-    highest = (std::max)(highest, l[e]);
-  }
-  if(!(lowest > 1e-120 && highest < 1e120)) return -1; // also NaN
+  double highest = l[0];
+  for(int e = 1; e < 6; ++e) highest = (std::max)(highest, l[e]);
   // facet j, with p = (j+1)&3, q = (j+2)&3, r = (j+3)&3: the edges pq, pr and qr
   static constexpr int edge_pq[4] = {3, 5, 2, 0}, edge_pr[4] = {4, 1, 4, 1}, edge_qr[4] = {5, 2, 0, 3};
   // A facet whose longest edge is below sqrt(3/4) times the longest edge of the cell cannot be
