@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <iostream>
 #include <vector>
 
@@ -154,8 +155,16 @@ void check_largest_facets()
   };
   // A cell met by a random campaign on a grid with shifts of 1e-13: two obtuse facets on the
   // same longest edge, one of them so flat (an edge of 2.5e-13) that |pq x pr|^2 from the
-  // lengths comes out negative; the lengths-only path must leave it undecided. At several
-  // scales (powers of 2: the same cell, exactly).
+  // lengths comes out negative; the lengths-only path certified a wrong facet there before it
+  // required a known, positive R_B. At several scales (powers of 2: the same cell, exactly).
+  {
+    // a NaN coordinate (rejected by the public functions) on any vertex leaves the cell undecided
+    for(int k = 0; k < 4; ++k) {
+      LI::Coordinates_3 c[4] = {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};
+      c[k][k % 3] = std::numeric_limits<double>::quiet_NaN();
+      assert(LI::certified_largest_facet(c) < 0);
+    }
+  }
   for(int e : {0, -30, 30, -200, 200}) {
     const double s = std::ldexp(1.0, e);
     all_orders({{Point(0, 0.25000000000025002 * s, 0.125 * s), Point(2.4999999999999999e-13 * s, 0.25000000000025002 * s, 0.125 * s),
@@ -179,7 +188,7 @@ void check_largest_facets()
     all_orders({{at(0, 0, 0), at(1, 0, 0), at(x, y, z), nudge(at(0, 0, 0.5), rng.get_int(-2, 3))}});
     // flat cells: two obtuse facets on the common longest edge (the same R_B) with their apexes
     // at a height of 1e-5, whose circumradii differ by about 1e-7 relative: less than the error
-    // of R_C evaluated from the edge lengths alone, which must then leave the cell undecided
+    // of R_C evaluated from the edge lengths alone (a bound that is too tight fails here)
     const double flat = 1e-5 * z;
     all_orders({{at(0, 0, 0), at(1, 0, 0), at(x, y * flat, flat),
                  at(x * (1 + rng.get_double(-1e-7, 1e-7)), y * flat, -flat * (1 + rng.get_double(-1e-7, 1e-7)))}});

@@ -9,7 +9,8 @@
 // largest facets these are a few thousand among tens of millions of elements. The array is
 // allocated with `calloc`, which takes large blocks from the system as fresh pages that are
 // already zero: the pages that are never written are never touched, so they cost neither
-// memory nor page faults (32 MB and 8k faults for the 33M cells of 5M points). With an
+// memory nor page faults (the 31M cells of 5M points on a terrain: the peak of the open
+// surface fell by 20 MB, from 2,937,628 to 2,917,460 kB). With an
 // allocator that zeroes the block itself, the array just costs what a zeroed vector costs.
 
 #include <cstddef>
@@ -31,14 +32,11 @@ public:
   void assign(std::size_t n)
   {
     bytes_.reset();
-    size_ = 0;
     if(n == 0) return;
     bytes_.reset(static_cast<std::uint8_t*>(std::calloc(n, 1)));
     if(!bytes_) throw std::bad_alloc();
-    size_ = n;
   }
 
-  std::size_t size() const { return size_; }
   std::uint8_t& operator[](std::size_t i) { return bytes_.get()[i]; }
   std::uint8_t operator[](std::size_t i) const { return bytes_.get()[i]; }
   const std::uint8_t* data() const { return bytes_.get(); }
@@ -49,7 +47,6 @@ private:
     void operator()(std::uint8_t* p) const { std::free(p); }
   };
   std::unique_ptr<std::uint8_t[], Free> bytes_;
-  std::size_t size_ = 0;
 };
 
 } // namespace internal
