@@ -214,13 +214,12 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
     assert(got == full_cut(std::vector<std::uint32_t>{expected.cell}));
     // other single sources, through the spanning tree of the contracted pass
     LI::Contracted_dual_graph_3<DT> contracted(dt, graph.cell_positions(), std::vector<std::uint32_t>(), sinks, always);
-    std::vector<std::uint32_t> labels(graph.number_of_cells());
-    for(std::uint32_t c = 0; c < labels.size(); ++c) labels[c] = contracted.sets().find(c);
+    LI::Component_numbers components;
     std::vector<std::uint32_t> tree;
-    const LI::Automatic_interior a = LI::most_persistent_void(contracted, tree);
+    const LI::Automatic_interior a = LI::most_persistent_void(contracted, components, tree);
     assert(a.cell == expected.cell);
     std::size_t contractions = 0;
-    for(std::uint32_t c = 0; c < labels.size(); ++c)
+    for(std::uint32_t c = 0; c < graph.number_of_cells(); ++c)
       contractions += contracted.across()[c] != c && !(contracted.across()[contracted.across()[c]] == c && contracted.across()[c] < c);
     assert(tree.size() + contractions == graph.number_of_cells() - sinks.size()); // a spanning tree, sinks contracted
     const std::vector<std::uint32_t> tree_copy = tree;
@@ -230,12 +229,12 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
       do s = std::uint32_t(pick.get_int(0, int(graph.number_of_cells())));
       while(std::binary_search(sinks.begin(), sinks.end(), s));
       LI::Contracted_dual_graph_3<DT> again(dt, graph.cell_positions(), std::vector<std::uint32_t>(), sinks, always);
-      std::vector<std::uint32_t> again_labels(labels.size()), again_tree;
-      for(std::uint32_t c = 0; c < labels.size(); ++c) again_labels[c] = again.sets().find(c);
-      LI::most_persistent_void(again, again_tree);
+      LI::Component_numbers again_components;
+      std::vector<std::uint32_t> again_tree;
+      LI::most_persistent_void(again, again_components, again_tree);
       assert(again_tree == tree_copy);
       std::vector<bool> inside;
-      const auto cut = LI::lexicographic_closed_cut_from_tree(again, again_labels, again_tree, s, sinks, inside, always);
+      const auto cut = LI::lexicographic_closed_cut_from_tree(again, again_components, again_tree, s, sinks, inside, always);
       std::vector<DT::Facet> facets;
       for(const auto& r : cut) {
         const auto owner = graph.cell(Full_graph::owner_position(r));

@@ -174,10 +174,9 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   std::vector<Dual_edge_record> cut;
   if(sources.empty()) {
     const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
-    std::vector<std::uint32_t> labels(cells.size()); // the components of the contraction
-    for(std::uint32_t c = 0; c < labels.size(); ++c) labels[c] = contracted.sets().find(c);
+    Component_numbers components; // of the contraction
     std::vector<std::uint32_t> spanning_tree;
-    const Automatic_interior a = most_persistent_void(contracted, spanning_tree);
+    const Automatic_interior a = most_persistent_void(contracted, components, spanning_tree);
     report.automatic_interior = true;
     report.interior_persistence = a.persistence;
     if(!(a.persistence >= minimum)) {
@@ -188,10 +187,11 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
       throw Input_error(Input_error_code::NO_INTERIOR_FOUND, msg.str());
     }
     if(verbose)
-      std::cerr << "Lex_optimal_chains: automatic interior cell, persistence " << a.persistence << "\n";
+      std::cerr << "Lex_optimal_chains: automatic interior cell, persistence " << a.persistence << ", in "
+                << watch.elapsed() << " s (" << spanning_tree.size() << " tree facets between components)\n";
     // the Kruskal pass of the persistence also gave the spanning tree: Algorithm 8 needs no
     // second pass over the triangles
-    cut = lexicographic_closed_cut_from_tree(contracted, labels, spanning_tree, a.cell, sinks, inside, cut_progress);
+    cut = lexicographic_closed_cut_from_tree(contracted, components, spanning_tree, a.cell, sinks, inside, cut_progress);
   } else {
     cut = lexicographic_closed_cut(contracted, inside, cut_progress);
   }

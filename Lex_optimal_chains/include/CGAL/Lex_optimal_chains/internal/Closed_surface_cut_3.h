@@ -20,6 +20,7 @@
 // the facets, and the contraction gives nearly all of the spanning tree.
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/internal/Component_numbers.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Largest_facets_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
@@ -102,6 +103,7 @@ public:
   // per cell position: the cell across its largest facet, or the cell itself if not contracted
   const std::vector<std::uint32_t>& across() const { return across_; }
   Union_find& sets() { return sets_; }
+  const Union_find& sets() const { return sets_; }
   std::uint32_t sink_root() const { return sink_root_; }
   std::uint32_t source_root() const { return source_root_; }
   // comparisons of the contraction that the double evaluations could not decide
@@ -147,36 +149,38 @@ private:
 //
 // On the contracted graph (built without sources): a component of the contraction is born at
 // its largest facet, the facet shared by the two cells whose largest facet it is, and the
-// contractions themselves are deaths at birth (ratio 1). `tree` receives the positions in
+// contractions themselves are deaths at birth (ratio 1). `components` receives the numbers of
+// the components of the contraction, by their roots in `contracted.sets()`, which are left
+// unchanged: 0 for the sinks', then in the order of the lower cells of their largest facets.
+// The pass runs on disjoint sets over these numbers. `tree` receives the positions in
 // `contracted.graph().records()` of the facets that united two components, in decreasing
 // order: with the contractions, the maximum spanning tree of the dual graph.
 template <class Triangulation>
-Automatic_interior most_persistent_void(Contracted_dual_graph_3<Triangulation>& contracted,
-                                        std::vector<std::uint32_t>& tree)
+Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulation>& contracted,
+                                        Component_numbers& components, std::vector<std::uint32_t>& tree)
 {
   using Graph = Sorted_dual_graph_3<Triangulation>;
   using Facet = std::pair<std::uint32_t, int>;
   const auto& records = contracted.graph().records();
   const std::vector<std::uint32_t>& across = contracted.across();
-  Union_find& sets = contracted.sets();
-  const std::uint32_t sink_root = contracted.sink_root();
+  const Union_find& labels = contracted.sets(); // flat: one read gives the root
 
-  // births of the components of the contraction, by root; the sinks' component has none
+  // births of the components of the contraction, by number; the sinks' component has none
   struct Birth { Facet facet; double value; std::uint32_t cell; };
-  std::vector<Birth> births;
-  std::unordered_map<std::uint32_t, std::uint32_t> birth_of_root;
+  std::vector<Birth> births(1);
+  std::vector<std::uint32_t> roots(1, contracted.sink_root());
   for(std::uint32_t c = 0; c < across.size(); ++c) {
     const std::uint32_t d = across[c];
     if(d == c || across[d] != c || d < c) continue;
     const Facet f = contracted.largest_facet(c);
-    birth_of_root.emplace(sets.find(c), std::uint32_t(births.size()));
+    roots.push_back(labels.find_in_flat(c));
     // the cell that the full Kruskal pass would report: the owner of the facet
     births.push_back(Birth{f, contracted.key_value_of(f), f.first});
   }
-  constexpr std::uint32_t oldest = std::numeric_limits<std::uint32_t>::max();
-  auto birth = [&](std::uint32_t root) -> std::uint32_t {
-    return root == sets.find(sink_root) ? oldest : birth_of_root.at(root);
-  };
+  components = Component_numbers(roots.size());
+  for(std::uint32_t r : roots) components.insert(r);
+  CGAL_assertion(components.size() == roots.size()); // the sinks' component has no such pair
+  constexpr std::uint32_t oldest = 0;
   // true if the component born at `a` is younger than the one born at `b` (smaller facet)
   auto younger = [&](std::uint32_t a, std::uint32_t b) {
     if(a == oldest) return false;
@@ -185,6 +189,9 @@ Automatic_interior most_persistent_void(Contracted_dual_graph_3<Triangulation>& 
                                   contracted.coordinates(births[b].facet)) == SMALLER;
   };
 
+  Union_find sets(components.size());
+  std::vector<std::uint32_t> birth_of_root(components.size()); // by root of `sets`
+  for(std::uint32_t i = 0; i < birth_of_root.size(); ++i) birth_of_root[i] = i;
   tree.clear();
   Automatic_interior best;
   bool found = false;
@@ -192,14 +199,14 @@ Automatic_interior most_persistent_void(Contracted_dual_graph_3<Triangulation>& 
   for(std::size_t t = 0; t < m; ++t) {
     if(t + 16 < m) {
       const auto& next = records[m - 1 - t - 16];
-      sets.prefetch(Graph::owner_position(next));
-      sets.prefetch(Graph::other_position(next));
+      labels.prefetch(Graph::owner_position(next));
+      labels.prefetch(Graph::other_position(next));
     }
     const auto& r = records[m - 1 - t];
-    const std::uint32_t a = sets.find(Graph::owner_position(r));
-    const std::uint32_t b = sets.find(Graph::other_position(r));
+    const std::uint32_t a = sets.find(components[labels.find_in_flat(Graph::owner_position(r))]);
+    const std::uint32_t b = sets.find(components[labels.find_in_flat(Graph::other_position(r))]);
     if(a == b) continue;
-    const std::uint32_t ba = birth(a), bb = birth(b);
+    const std::uint32_t ba = birth_of_root[a], bb = birth_of_root[b];
     const bool a_younger = younger(ba, bb);
     const std::uint32_t young_birth = a_younger ? ba : bb, old_birth = a_younger ? bb : ba;
     const double born = births[young_birth].value;
@@ -210,10 +217,7 @@ Automatic_interior most_persistent_void(Contracted_dual_graph_3<Triangulation>& 
       best.persistence = persistence;
       found = true;
     }
-    const std::uint32_t root = sets.link_roots(a, b);
-    birth_of_root.erase(a);
-    birth_of_root.erase(b);
-    if(old_birth != oldest) birth_of_root[root] = old_birth;
+    birth_of_root[sets.link_roots(a, b)] = old_birth;
     tree.push_back(std::uint32_t(m - 1 - t));
   }
   if(!found || !(best.persistence > 1)) {
@@ -285,12 +289,12 @@ std::vector<Dual_edge_record> lexicographic_closed_cut(Contracted_dual_graph_3<T
 // tree given by `most_persistent_void()` (the contractions plus `tree`): Algorithm 8 only
 // cuts, among the tree edges, the smallest one on the tree path from the source to the sinks,
 // and its final source component is the source's side of the tree without that edge. The cut
-// is then every facet between an inside and an outside cell. `labels` are the components of
-// the contraction (the roots before `most_persistent_void()`). Consumes `contracted`: its
-// disjoint sets are reused and its sorted facets may be released.
+// is then every facet between an inside and an outside cell. `components` numbers the
+// components of the contraction, as given by `most_persistent_void()`. Consumes `contracted`:
+// its sorted facets may be released.
 template <class Triangulation, class Progress>
 std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual_graph_3<Triangulation>& contracted,
-                                                                 const std::vector<std::uint32_t>& labels,
+                                                                 const Component_numbers& components,
                                                                  const std::vector<std::uint32_t>& tree,
                                                                  std::uint32_t source,
                                                                  const std::vector<std::uint32_t>& sinks,
@@ -300,25 +304,45 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
   using Graph = Sorted_dual_graph_3<Triangulation>;
   const std::vector<std::uint32_t>& across = contracted.across();
   const std::size_t n = across.size();
-  const std::uint32_t sink_label = labels[sinks.front()];
+  const Union_find& labels = contracted.sets(); // flat: the component of a cell in one read
+  auto label = [&labels](std::uint32_t c) { return labels.find_in_flat(c); };
+  auto number = [&](std::uint32_t c) { return components[label(c)]; };
+  const std::uint32_t sink_label = label(sinks.front());
+  const std::size_t k = components.size();
 
-  // the tree between the components of the contraction, rooted at the sinks' component
-  std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> incident; // label -> tree edges
+  // the tree between the components of the contraction, rooted at the sinks' component (0)
+  std::vector<std::uint32_t> first_incident(k + 1, 0), incident(2 * tree.size()); // by number
   for(std::uint32_t e = 0; e < tree.size(); ++e) {
     const auto& r = contracted.graph().records()[tree[e]];
-    incident[labels[Graph::owner_position(r)]].push_back(e);
-    incident[labels[Graph::other_position(r)]].push_back(e);
+    ++first_incident[number(Graph::owner_position(r)) + 1];
+    ++first_incident[number(Graph::other_position(r)) + 1];
   }
-  std::unordered_map<std::uint32_t, std::uint32_t> parent_edge; // label -> tree edge to the root
+  for(std::size_t i = 0; i < k; ++i) first_incident[i + 1] += first_incident[i];
   {
-    std::vector<std::uint32_t> queue{sink_label};
-    parent_edge.emplace(sink_label, std::numeric_limits<std::uint32_t>::max());
+    std::vector<std::uint32_t> next(first_incident.begin(), first_incident.end() - 1);
+    for(std::uint32_t e = 0; e < tree.size(); ++e) {
+      const auto& r = contracted.graph().records()[tree[e]];
+      incident[next[number(Graph::owner_position(r))]++] = e;
+      incident[next[number(Graph::other_position(r))]++] = e;
+    }
+  }
+  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> parent_edge(k, none); // by number: the tree edge to the root
+  {
+    CGAL_assertion(components[sink_label] == 0);
+    std::vector<std::uint32_t> queue{0};
+    std::vector<bool> reached(k, false);
+    reached[0] = true;
     for(std::size_t i = 0; i < queue.size(); ++i)
-      for(std::uint32_t e : incident[queue[i]]) {
+      for(std::uint32_t j = first_incident[queue[i]]; j < first_incident[queue[i] + 1]; ++j) {
+        const std::uint32_t e = incident[j];
         const auto& r = contracted.graph().records()[tree[e]];
-        const std::uint32_t a = labels[Graph::owner_position(r)], b = labels[Graph::other_position(r)];
+        const std::uint32_t a = number(Graph::owner_position(r)), b = number(Graph::other_position(r));
         const std::uint32_t next = a == queue[i] ? b : a;
-        if(parent_edge.emplace(next, e).second) queue.push_back(next);
+        if(reached[next]) continue;
+        reached[next] = true;
+        parent_edge[next] = e;
+        queue.push_back(next);
       }
   }
   if(!progress(0.1))
@@ -356,15 +380,15 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
     for(std::size_t i = 0; i < j; ++i) path.push_back(Edge{true, up_b[i]});
   };
   std::uint32_t at = source;
-  for(std::uint32_t label = labels[source]; label != sink_label;) {
-    const std::uint32_t e = parent_edge.at(label);
+  for(std::uint32_t l = label(source); l != sink_label;) {
+    const std::uint32_t e = parent_edge[components[l]];
     const auto& r = contracted.graph().records()[tree[e]];
     std::uint32_t lower = Graph::owner_position(r), upper = Graph::other_position(r);
-    if(labels[lower] != label) std::swap(lower, upper);
+    if(label(lower) != l) std::swap(lower, upper);
     path_within(at, lower);
     path.push_back(Edge{false, e});
     at = upper;
-    label = labels[upper];
+    l = label(upper);
   }
   climb(at, up_a); // in the sinks' component: up to a sink
   for(std::size_t i = 0; i + 1 < up_a.size(); ++i) path.push_back(Edge{true, up_a[i]});
@@ -393,29 +417,41 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
     cut_b = Graph::other_position(r);
   }
   // A component of the contraction stays whole on one side, unless the smallest edge is one
-  // of its contractions: it is a node of the sides, named by its label, and only the cells of
-  // a split component are nodes of their own, joined by its other contractions.
-  Union_find& sides = contracted.sets(); // the contraction's sets are not needed any more
-  sides.reset(n);
-  const std::uint32_t split_label = smallest.contraction ? labels[cut_a] : std::numeric_limits<std::uint32_t>::max();
-  auto node = [&](std::uint32_t c) { return labels[c] == split_label ? c : labels[c]; };
-  if(smallest.contraction)
+  // of its contractions. Usually it is not: the sides are then unions of components, found
+  // with disjoint sets over their numbers, and a cell is inside if its root is.
+  inside.assign(n, false);
+  if(!smallest.contraction) {
+    Union_find sides(k);
+    for(std::uint32_t e = 0; e < tree.size(); ++e) {
+      if(e == smallest.index) continue;
+      const auto& r = contracted.graph().records()[tree[e]];
+      sides.unite(number(Graph::owner_position(r)), number(Graph::other_position(r)));
+    }
+    const std::uint32_t inside_root = sides.find(number(source));
+    for(std::uint32_t i = 0; i < k; ++i)
+      if(sides.find(i) == inside_root) inside[components.key(i)] = true;
+    for(std::uint32_t c = 0; c < n; ++c) inside[c] = inside[label(c)]; // roots keep theirs
+  } else {
+    // The cells of the split component are nodes of their own, joined by its other
+    // contractions; every other component is a node named by its root.
+    Union_find sides(n);
+    const std::uint32_t split_label = label(cut_a);
+    auto node = [&](std::uint32_t c) { return label(c) == split_label ? c : label(c); };
     for(std::uint32_t c = 0; c < n; ++c) {
-      if(labels[c] != split_label) continue;
+      if(label(c) != split_label) continue;
       const std::uint32_t d = across[c];
       if(d == c || (c == cut_a && d == cut_b) || (c == cut_b && d == cut_a)) continue;
       sides.unite(c, d);
     }
-  std::uint32_t sink_root = sides.find(node(sinks.front()));
-  for(std::uint32_t s : sinks) sink_root = sides.unite(sink_root, node(s));
-  for(std::uint32_t e = 0; e < tree.size(); ++e) {
-    if(!smallest.contraction && e == smallest.index) continue;
-    const auto& r = contracted.graph().records()[tree[e]];
-    sides.unite(node(Graph::owner_position(r)), node(Graph::other_position(r)));
+    std::uint32_t sink_root = sides.find(node(sinks.front()));
+    for(std::uint32_t s : sinks) sink_root = sides.unite(sink_root, node(s));
+    for(std::uint32_t e = 0; e < tree.size(); ++e) {
+      const auto& r = contracted.graph().records()[tree[e]];
+      sides.unite(node(Graph::owner_position(r)), node(Graph::other_position(r)));
+    }
+    const std::uint32_t inside_root = sides.find(node(source));
+    for(std::uint32_t c = 0; c < n; ++c) inside[c] = sides.find(node(c)) == inside_root;
   }
-  const std::uint32_t inside_root = sides.find(node(source));
-  inside.assign(n, false);
-  for(std::uint32_t c = 0; c < n; ++c) inside[c] = sides.find(node(c)) == inside_root;
   if(!progress(0.6))
     throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
 

@@ -26,6 +26,8 @@ public:
     last_ = now;
     return s;
   }
+  // seconds since the previous lap (or the construction), without starting a new one
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count(); }
 private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
