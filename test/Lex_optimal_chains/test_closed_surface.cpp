@@ -425,10 +425,37 @@ int main(int argc, char** argv)
     std::size_t split_edges = 0;
     for(const auto& e : edge_facets) split_edges += e.second > 2;
     const std::size_t number_of_facets = facets.size();
+    // the same facets, about half of them named from their outside cell (as the cut names a
+    // facet by the cell that owns its record): the same mesh, index for index
+    std::vector<std::uint32_t> mixed = facets;
+    std::size_t named_from_outside = 0;
+    for(std::uint32_t& key : mixed)
+      if(rng.get_double() < 0.5) {
+        const DT::Cell_handle c = dt.tds().cells().iterator_to(*const_cast<DT::Cell*>(cells.element(key >> 2)));
+        const DT::Cell_handle n = c->neighbor(int(key & 3));
+        key = LOC::internal::Closed_surface_mesh_3<DT>::facet_key(cells.index(&*n), n->index(c));
+        ++named_from_outside;
+      }
     LOC::internal::Closed_surface_mesh_3<DT> surface(std::move(facets), cells, vertex_positions, inside);
     surface.complete();
     Mesh union_mesh;
     surface.build(union_mesh, union_mesh.points());
+    {
+      LOC::internal::Closed_surface_mesh_3<DT> again(std::move(mixed), cells, vertex_positions, inside);
+      again.complete();
+      Mesh mixed_mesh;
+      again.build(mixed_mesh, mixed_mesh.points());
+      assert(named_from_outside > 0 && num_vertices(mixed_mesh) == num_vertices(union_mesh) &&
+             num_faces(mixed_mesh) == num_faces(union_mesh));
+      for(auto v : vertices(union_mesh)) assert(mixed_mesh.point(v) == union_mesh.point(v));
+      for(auto f : faces(union_mesh)) {
+        auto h = halfedge(f, union_mesh), g = halfedge(f, mixed_mesh);
+        for(int k = 0; k < 3; ++k, h = next(h, union_mesh), g = next(g, mixed_mesh))
+          assert(target(h, union_mesh) == target(g, mixed_mesh));
+      }
+      assert(again.statistics().non_manifold_edges == surface.statistics().non_manifold_edges &&
+             again.statistics().non_manifold_vertices == surface.statistics().non_manifold_vertices);
+    }
     assert(CGAL::is_valid_polygon_mesh(union_mesh) && CGAL::is_closed(union_mesh) && CGAL::is_triangle_mesh(union_mesh));
     std::multiset<std::array<Point, 3>> got;
     for(auto f : faces(union_mesh)) {

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -61,8 +62,10 @@ public:
   // Reads from the triangulation all that the surface needs, and keeps no reference to it: the
   // triangulation may be freed once this constructor returns (that is when the memory peaks).
   // `facet_keys`: the boundary facets in their canonical order, each as the `facet_key()` of
-  // its inside cell (emptied here); `cells` numbers the cells and `inside[cells.index(c)]`
-  // tells if a cell is inside; `vertex_positions` numbers the vertices.
+  // either of its two cells (emptied here), the facet being oriented out of the inside one
+  // (the cut names a facet by the cell that owns its record, inside or not: naming it by its
+  // inside cell would read the other cell, at random); `cells` numbers the cells and
+  // `inside[cells.index(c)]` tells if a cell is inside; `vertex_positions` numbers the vertices.
   Closed_surface_mesh_3(std::vector<std::uint32_t>&& facet_keys, const Handle_index_map<Cell>& cells,
                         const Handle_index_map<Vertex>& vertex_positions, const std::vector<bool>& inside)
   {
@@ -100,7 +103,8 @@ public:
         for(const int i : outward_facet_vertices(reader.index(k + vertices_ahead))) prefetch_object(&*a->vertex(i));
       }
       const Cell* c = reader.cell(k);
-      const auto ov = outward_facet_vertices(reader.index(k));
+      auto ov = outward_facet_vertices(reader.index(k));
+      if(!reader.named_from_inside(k)) std::swap(ov[1], ov[2]); // out of the other cell
       const Vertex* v[3];
       for(int i = 0; i < 3; ++i) v[i] = &*c->vertex(ov[i]);
       int first = 0;
@@ -121,7 +125,13 @@ public:
       for(std::uint32_t k = 0; k < nf; ++k)
         if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)
           unpaired.push_back(k);
-      const Facet_table table(keys, unpaired, cells.size());
+      std::vector<std::uint32_t> inside_keys; // of these facets, named from their inside cells
+      inside_keys.reserve(unpaired.size());
+      for(const std::uint32_t k : unpaired) {
+        const auto f = reader.from_inside(k);
+        inside_keys.push_back(facet_key(cells.index(f.first), f.second));
+      }
+      const Facet_table table(inside_keys, unpaired, cells.size());
       for(const std::uint32_t k : unpaired)
         for(int e = 0; e < 3; ++e) {
           const std::uint32_t h = std::uint32_t(3 * k + e);
@@ -292,11 +302,22 @@ private:
     const Cell* cell(std::size_t k) const { return cells.element(keys[k] >> 2); }
     int index(std::size_t k) const { return int(keys[k] & 3); }
     bool is_inside(const Cell* c) const { return inside[cells.index(c)]; }
+    bool named_from_inside(std::size_t k) const { return inside[keys[k] >> 2]; }
+    // facet k as (its inside cell, its index there)
+    std::pair<const Cell*, int> from_inside(std::size_t k) const
+    {
+      const Cell* c = cell(k);
+      if(named_from_inside(k)) return std::make_pair(c, index(k));
+      const Cell* n = &*c->neighbor(index(k));
+      int j = 0;
+      while(&*n->neighbor(j) != c) ++j;
+      return std::make_pair(n, j);
+    }
   };
 
-  // Facet key -> position in the memory order, for the facets at the positions `which`, by
-  // open addressing with a monotone hash (keys are spread over [0, 4 * cells), and locality
-  // is kept).
+  // Facet key -> position in the memory order, for the facets at the positions `which`, whose
+  // keys are `keys` (in the same order), by open addressing with a monotone hash (keys are
+  // spread over [0, 4 * cells), and locality is kept).
   class Facet_table
   {
   public:
@@ -304,13 +325,14 @@ private:
                 std::size_t number_of_cells)
       : key_range_(4 * std::uint64_t(number_of_cells))
     {
+      CGAL_precondition(keys.size() == which.size());
       std::size_t slots = 16;
       while(slots < 2 * which.size()) slots *= 2;
       table_.assign(slots, Slot{empty_key, 0});
-      for(const std::uint32_t k : which) {
-        std::size_t h = hash(keys[k]);
+      for(std::size_t i = 0; i < which.size(); ++i) {
+        std::size_t h = hash(keys[i]);
         while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
-        table_[h] = Slot{keys[k], std::uint32_t(k)};
+        table_[h] = Slot{keys[i], which[i]};
       }
     }
 
@@ -365,8 +387,9 @@ private:
     const std::uint32_t u = corners_[3 * k + e], v = corners_[3 * k + (e + 1) % 3];
     const Vertex* const u_vertex = reader.vertices.element(u);
     const Vertex* const v_vertex = reader.vertices.element(v);
-    const Cell* cur = reader.cell(k);
-    const Vertex* behind = &*cur->vertex(reader.index(k)); // we "arrive" through the facet opposite it
+    const auto start = reader.from_inside(k);
+    const Cell* cur = start.first;
+    const Vertex* behind = &*cur->vertex(start.second); // we "arrive" through the facet opposite it
     for(std::size_t guard = 0;; ++guard) {
       CGAL_assertion(guard < 100000);
       int q = -1;
