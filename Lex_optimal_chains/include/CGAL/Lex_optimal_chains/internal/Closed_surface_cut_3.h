@@ -199,8 +199,8 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
   for(std::size_t t = 0; t < m; ++t) {
     if(t + 16 < m) {
       const auto& next = records[m - 1 - t - 16];
-      labels.prefetch(Graph::owner_position(next));
-      labels.prefetch(Graph::other_position(next));
+      labels.prefetch_parent(Graph::owner_position(next));
+      labels.prefetch_parent(Graph::other_position(next));
     }
     const auto& r = records[m - 1 - t];
     const std::uint32_t a = sets.find(components[labels.find_in_flat(Graph::owner_position(r))]);

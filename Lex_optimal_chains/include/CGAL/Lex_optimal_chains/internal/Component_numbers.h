@@ -30,6 +30,7 @@ public:
     while((std::size_t(1) << bits_) < 2 * n) ++bits_;
     slots_.assign(std::size_t(1) << bits_, empty);
     keys_.reserve(n);
+    capacity_ = n;
   }
 
   // The number of `key`, which is given the next one if it has none.
@@ -38,7 +39,7 @@ public:
     std::size_t s = slot_of(key);
     for(; slots_[s] != empty; s = (s + 1) & mask())
       if(std::uint32_t(slots_[s] >> 32) == key) return std::uint32_t(slots_[s]);
-    CGAL_precondition(keys_.size() < keys_.capacity()); // at most n keys
+    CGAL_precondition(keys_.size() < capacity_); // at most n keys: a slot stays free
     const std::uint32_t number = std::uint32_t(keys_.size());
     slots_[s] = (std::uint64_t(key) << 32) | number;
     keys_.push_back(key);
@@ -49,7 +50,7 @@ public:
   std::uint32_t operator[](std::uint32_t key) const
   {
     for(std::size_t s = slot_of(key);; s = (s + 1) & mask()) {
-      CGAL_assertion(slots_[s] != empty);
+      if(slots_[s] == empty) CGAL_error_msg("Component_numbers: a key that was not inserted");
       if(std::uint32_t(slots_[s] >> 32) == key) return std::uint32_t(slots_[s]);
     }
   }
@@ -68,6 +69,7 @@ private:
   }
 
   int bits_;
+  std::size_t capacity_;
   std::vector<std::uint64_t> slots_;
   std::vector<std::uint32_t> keys_;
 };

@@ -77,6 +77,9 @@ public:
     prefetch_address(rank_.data() + x); // read if x is a root that gets linked
   }
 
+  // Hints that `find_in_flat(x)` will be called soon: no link follows, the rank is not read.
+  void prefetch_parent(Index x) const { prefetch_address(parent_.data() + x); }
+
   // Links the two roots `a` and `b` (which must be roots) and returns the new root.
   Index link_roots(Index a, Index b)
   {
