@@ -214,7 +214,7 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
     assert(got == full_cut(std::vector<std::uint32_t>{expected.cell}));
     // other single sources, through the spanning tree of the contracted pass
     LI::Contracted_dual_graph_3<DT> contracted(dt, graph.cell_positions(), std::vector<std::uint32_t>(), sinks, always);
-    LI::Component_numbers components;
+    LI::Dense_numbers components;
     std::vector<std::uint32_t> tree;
     const LI::Automatic_interior a = LI::most_persistent_void(contracted, components, tree);
     assert(a.cell == expected.cell);
@@ -229,7 +229,7 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
       do s = std::uint32_t(pick.get_int(0, int(graph.number_of_cells())));
       while(std::binary_search(sinks.begin(), sinks.end(), s));
       LI::Contracted_dual_graph_3<DT> again(dt, graph.cell_positions(), std::vector<std::uint32_t>(), sinks, always);
-      LI::Component_numbers again_components;
+      LI::Dense_numbers again_components;
       std::vector<std::uint32_t> again_tree;
       LI::most_persistent_void(again, again_components, again_tree);
       assert(again_tree == tree_copy);

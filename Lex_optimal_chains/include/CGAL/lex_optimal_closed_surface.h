@@ -176,7 +176,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   std::vector<Dual_edge_record> cut;
   if(sources.empty()) {
     const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
-    Component_numbers components; // of the contraction
+    Dense_numbers components; // of the contraction
     std::vector<std::uint32_t> spanning_tree;
     const Automatic_interior a = most_persistent_void(contracted, components, spanning_tree);
     report.automatic_interior = true;

@@ -20,7 +20,7 @@
 // the facets, and the contraction gives nearly all of the spanning tree.
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
-#include <CGAL/Lex_optimal_chains/internal/Component_numbers.h>
+#include <CGAL/Lex_optimal_chains/internal/Dense_numbers.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Largest_facets_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
@@ -157,7 +157,7 @@ private:
 // order: with the contractions, the maximum spanning tree of the dual graph.
 template <class Triangulation>
 Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulation>& contracted,
-                                        Component_numbers& components, std::vector<std::uint32_t>& tree)
+                                        Dense_numbers& components, std::vector<std::uint32_t>& tree)
 {
   using Graph = Sorted_dual_graph_3<Triangulation>;
   using Facet = std::pair<std::uint32_t, int>;
@@ -177,7 +177,7 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
     // the cell that the full Kruskal pass would report: the owner of the facet
     births.push_back(Birth{f, contracted.key_value_of(f), f.first});
   }
-  components = Component_numbers(roots.size());
+  components = Dense_numbers(roots.size());
   for(std::uint32_t r : roots) components.insert(r);
   CGAL_assertion(components.size() == roots.size()); // the sinks' component has no such pair
   constexpr std::uint32_t oldest = 0;
@@ -294,7 +294,7 @@ std::vector<Dual_edge_record> lexicographic_closed_cut(Contracted_dual_graph_3<T
 // its sorted facets may be released.
 template <class Triangulation, class Progress>
 std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual_graph_3<Triangulation>& contracted,
-                                                                 const Component_numbers& components,
+                                                                 const Dense_numbers& components,
                                                                  const std::vector<std::uint32_t>& tree,
                                                                  std::uint32_t source,
                                                                  const std::vector<std::uint32_t>& sinks,

@@ -12,6 +12,7 @@
 // joins them directly); around a vertex, each umbrella (cycle of facets linked by twins)
 // gets its own copy of the vertex.
 
+#include <CGAL/Lex_optimal_chains/internal/Dense_numbers.h>
 #include <CGAL/Lex_optimal_chains/internal/Edge_groups.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
@@ -125,18 +126,17 @@ public:
       for(std::uint32_t k = 0; k < nf; ++k)
         if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)
           unpaired.push_back(k);
-      std::vector<std::uint32_t> inside_keys; // of these facets, named from their inside cells
-      inside_keys.reserve(unpaired.size());
+      Dense_numbers table(unpaired.size()); // their keys, named from their inside cells
       for(const std::uint32_t k : unpaired) {
         const auto f = reader.from_inside(k);
-        inside_keys.push_back(facet_key(cells.index(f.first), f.second));
+        table.insert(facet_key(cells.index(f.first), f.second)); // number i: unpaired[i]
       }
-      const Facet_table table(inside_keys, unpaired, cells.size());
+      CGAL_assertion(table.size() == unpaired.size()); // distinct facets, distinct keys
       for(const std::uint32_t k : unpaired)
         for(int e = 0; e < 3; ++e) {
           const std::uint32_t h = std::uint32_t(3 * k + e);
           if(twin_[h] != UINT32_MAX) continue;
-          const std::uint32_t t = find_twin(reader, table, k, e);
+          const std::uint32_t t = find_twin(reader, table, unpaired, k, e);
           CGAL_assertion(twin_[t] == UINT32_MAX);
           twin_[h] = t;
           twin_[t] = h;
@@ -315,45 +315,6 @@ private:
     }
   };
 
-  // Facet key -> position in the memory order, for the facets at the positions `which`, whose
-  // keys are `keys` (in the same order), by open addressing with a monotone hash (keys are
-  // spread over [0, 4 * cells), and locality is kept).
-  class Facet_table
-  {
-  public:
-    Facet_table(const std::vector<std::uint32_t>& keys, const std::vector<std::uint32_t>& which,
-                std::size_t number_of_cells)
-      : key_range_(4 * std::uint64_t(number_of_cells))
-    {
-      CGAL_precondition(keys.size() == which.size());
-      std::size_t slots = 16;
-      while(slots < 2 * which.size()) slots *= 2;
-      table_.assign(slots, Slot{empty_key, 0});
-      for(std::size_t i = 0; i < which.size(); ++i) {
-        std::size_t h = hash(keys[i]);
-        while(table_[h].key != empty_key) h = (h + 1) & (table_.size() - 1);
-        table_[h] = Slot{keys[i], which[i]};
-      }
-    }
-
-    std::uint32_t position(std::uint32_t key) const
-    {
-      std::size_t h = hash(key);
-      while(table_[h].key != key) {
-        CGAL_assertion(table_[h].key != empty_key);
-        h = (h + 1) & (table_.size() - 1);
-      }
-      return table_[h].position;
-    }
-
-  private:
-    struct Slot { std::uint32_t key, position; };
-    static constexpr std::uint32_t empty_key = UINT32_MAX;
-    std::size_t hash(std::uint32_t key) const { return std::size_t(std::uint64_t(key) * table_.size() / key_range_); }
-    std::uint64_t key_range_;
-    std::vector<Slot> table_;
-  };
-
   // The corner after `c` around its vertex: the twin of the half-edge that enters the vertex
   // in the facet of `c` starts at that vertex in the next facet.
   std::uint32_t next_corner_around_vertex(std::uint32_t c) const { return twin_[3 * (c / 3) + (c % 3 + 2) % 3]; }
@@ -382,7 +343,10 @@ private:
 
   // Half-edge 3k+e goes from outward vertex e to outward vertex e+1 of facet k. Its twin is
   // the boundary half-edge met first when turning around that edge through inside cells.
-  std::uint32_t find_twin(const Triangulation_reader& reader, const Facet_table& table, std::size_t k, int e) const
+  // `table` numbers the keys of the facets at the positions `unpaired`, named from their inside
+  // cells.
+  std::uint32_t find_twin(const Triangulation_reader& reader, const Dense_numbers& table,
+                          const std::vector<std::uint32_t>& unpaired, std::size_t k, int e) const
   {
     const std::uint32_t u = corners_[3 * k + e], v = corners_[3 * k + (e + 1) % 3];
     const Vertex* const u_vertex = reader.vertices.element(u);
@@ -400,7 +364,7 @@ private:
       CGAL_assertion(q >= 0);
       const Cell* next = &*cur->neighbor(q);
       if(!reader.is_inside(next)) {
-        const std::uint32_t k2 = table.position(facet_key(reader.cells.index(cur), q));
+        const std::uint32_t k2 = unpaired[table[facet_key(reader.cells.index(cur), q)]];
         for(std::uint32_t e2 = 0; e2 < 3; ++e2)
           if(corners_[3 * k2 + e2] == v && corners_[3 * k2 + (e2 + 1) % 3] == u) return 3 * k2 + e2;
         CGAL_error_msg("inconsistent orientation around an edge");

@@ -1,15 +1,16 @@
 // Copyright (c) 2026  The Lex_optimal_chains authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_COMPONENT_NUMBERS_H
-#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_COMPONENT_NUMBERS_H
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_DENSE_NUMBERS_H
+#define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_DENSE_NUMBERS_H
 
-// Dense numbers 0, 1, ... for a few keys among many indices: the roots of the components of
-// the contraction (865 of the 6.2M cells of 1M points on a torus, 46k of the 31M cells of
-// 5M points). A Kruskal pass over the sorted facets looks up the components of both cells of
-// every facet; an open-addressing table over the roots stays in cache, where an array over
-// all the cells, or disjoint sets over them, would not (at 5M points, a copy of the roots of
-// all the cells cost 0.5 s, and the pass on disjoint sets over the cells 0.44 s).
+// Dense numbers 0, 1, ... for a few keys among many indices, in the order of their insertion:
+// the roots of the components of the contraction (865 of the 6.2M cells of 1M points on a
+// torus, 46k of the 31M cells of 5M points), or the facets of a surface met around its
+// non-manifold edges. A Kruskal pass over the sorted facets looks up the components of both
+// cells of every facet; an open-addressing table over the roots stays in cache, where an array
+// over all the cells, or disjoint sets over them, would not (at 5M points, a copy of the roots
+// of all the cells cost 0.5 s, and the pass on disjoint sets over the cells 0.44 s).
 
 #include <CGAL/assertions.h>
 
@@ -20,11 +21,11 @@ namespace CGAL {
 namespace Lex_optimal_chains {
 namespace internal {
 
-class Component_numbers
+class Dense_numbers
 {
 public:
   // Prepares for at most `n` keys.
-  explicit Component_numbers(std::size_t n = 0)
+  explicit Dense_numbers(std::size_t n = 0)
   {
     bits_ = 4;
     while((std::size_t(1) << bits_) < 2 * n) ++bits_;
@@ -50,7 +51,7 @@ public:
   std::uint32_t operator[](std::uint32_t key) const
   {
     for(std::size_t s = slot_of(key);; s = (s + 1) & mask()) {
-      if(slots_[s] == empty) CGAL_error_msg("Component_numbers: a key that was not inserted");
+      if(slots_[s] == empty) CGAL_error_msg("Dense_numbers: a key that was not inserted");
       if(std::uint32_t(slots_[s] >> 32) == key) return std::uint32_t(slots_[s]);
     }
   }
@@ -78,4 +79,4 @@ private:
 } // namespace Lex_optimal_chains
 } // namespace CGAL
 
-#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_COMPONENT_NUMBERS_H
+#endif // CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_DENSE_NUMBERS_H
