@@ -158,7 +158,9 @@ void check_largest_facets()
   // lengths comes out negative; the lengths-only path certified a wrong facet there before it
   // required a known, positive R_B. At several scales (powers of 2: the same cell, exactly).
   {
-    // a NaN coordinate (rejected by the public functions) on any vertex leaves the cell undecided
+    // a NaN coordinate (rejected by the public functions) on any vertex leaves the cell
+    // undecided. This guards the outcome only: it also holds without the range check of the
+    // squared lengths (every comparison with a NaN length fails), so it does not test that check
     for(int k = 0; k < 4; ++k) {
       LI::Coordinates_3 c[4] = {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}};
       c[k][k % 3] = std::numeric_limits<double>::quiet_NaN();

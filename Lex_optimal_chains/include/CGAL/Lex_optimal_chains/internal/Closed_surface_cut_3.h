@@ -32,6 +32,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -191,7 +192,7 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
 
   Union_find sets(components.size());
   std::vector<std::uint32_t> birth_of_root(components.size()); // by root of `sets`
-  for(std::uint32_t i = 0; i < birth_of_root.size(); ++i) birth_of_root[i] = i;
+  std::iota(birth_of_root.begin(), birth_of_root.end(), std::uint32_t(0));
   tree.clear();
   Automatic_interior best;
   bool found = false;
