@@ -1,7 +1,7 @@
 // lex_reconstruct: surface reconstruction from a point cloud as a lexicographic optimal chain.
 //
 //   lex_reconstruct closed INPUT OUTPUT [--interior X,Y,Z]... [--exterior X,Y,Z]...
-//                   [--threads N] [--json]
+//                   [--min-persistence V] [--threads N] [--json]
 //   lex_reconstruct open INPUT OUTPUT (--boundary FILE | --auto-boundary)
 //                   [--coefficients z2|q] [--remove-blocking-points]
 //                   [--drop-boundary-triangles | --keep-boundary-triangles] [--threads N] [--json]
@@ -211,7 +211,8 @@ static void add_common_statistics(nlohmann::json& j, const std::string& input, c
 }
 
 static int run_closed(const std::string& input, const std::string& output, const std::vector<std::string>& interior_text,
-                      const std::vector<std::string>& exterior_text, unsigned threads, bool json)
+                      const std::vector<std::string>& exterior_text, double min_persistence, unsigned threads,
+                      bool json)
 {
   Output_file file(output);
   std::vector<Point> interior, exterior;
@@ -224,8 +225,9 @@ static int run_closed(const std::string& input, const std::string& output, const
     points, mesh,
     LOC::parameters::interior_points(interior,
     LOC::parameters::exterior_points(exterior,
+    LOC::parameters::minimum_interior_persistence(min_persistence,
     LOC::parameters::number_of_threads(threads,
-    LOC::parameters::callback(bar.callback())))));
+    LOC::parameters::callback(bar.callback()))))));
   CGAL::Real_timer io;
   io.start();
   file.write(mesh);
@@ -306,6 +308,7 @@ int main(int argc, char** argv)
   std::string input, output, boundary_file, coefficients = "q";
   std::vector<std::string> interior_text, exterior_text;
   unsigned threads = 1;
+  double min_persistence = 4;
   bool json = false, auto_boundary = false, remove_blocking = false, drop = false, keep = false;
 
   CLI::App* closed = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
@@ -313,6 +316,10 @@ int main(int argc, char** argv)
   closed->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
   closed->add_option("--interior", interior_text, "a point inside the surface, X,Y,Z (repeatable)");
   closed->add_option("--exterior", exterior_text, "a point outside the surface, X,Y,Z (repeatable)");
+  closed->add_option("--min-persistence", min_persistence,
+                     "without --interior: how clearly the automatic interior must stand out (default 4; "
+                     "lower it when the error says the most persistent void is below it)")
+    ->check(CLI::PositiveNumber);
   closed->add_option("--threads", threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
   closed->add_flag("--json", json, "print one JSON line of statistics on stdout");
 
@@ -339,7 +346,7 @@ int main(int argc, char** argv)
     return app.exit(e);
   }
   try {
-    if(closed->parsed()) return run_closed(input, output, interior_text, exterior_text, threads, json);
+    if(closed->parsed()) return run_closed(input, output, interior_text, exterior_text, min_persistence, threads, json);
     return run_open(input, output, boundary_file, auto_boundary, coefficients, remove_blocking, drop, keep, threads, json);
   } catch(const std::exception& e) {
     std::cerr << "lex_reconstruct: error: " << e.what() << std::endl;
