@@ -220,7 +220,7 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
     assert(a.cell == expected.cell);
     std::size_t contractions = 0;
     for(std::uint32_t c = 0; c < graph.number_of_cells(); ++c)
-      contractions += contracted.across()[c] != c && !(contracted.across()[contracted.across()[c]] == c && contracted.across()[c] < c);
+      contractions += contracted.across(c) != c && !(contracted.across(contracted.across(c)) == c && contracted.across(c) < c);
     assert(tree.size() + contractions == graph.number_of_cells() - sinks.size()); // a spanning tree, sinks contracted
     const std::vector<std::uint32_t> tree_copy = tree;
     CGAL::Random pick(7);

@@ -72,20 +72,22 @@ public:
   Contracted_dual_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells,
                           const std::vector<std::uint32_t>& sources, const std::vector<std::uint32_t>& sinks,
                           const Progress& progress)
-    : dt_(dt), cells_(cells), sets_(cells.size())
+    : dt_(dt), cells_(cells), sets_(cells.size()), terminal_(cells.size(), false)
   {
-    std::vector<bool> terminal(cells.size(), false);
-    for(std::uint32_t s : sources) terminal[s] = true;
-    for(std::uint32_t s : sinks) terminal[s] = true;
+    for(std::uint32_t s : sources) terminal_[s] = true;
+    for(std::uint32_t s : sinks) terminal_[s] = true;
     auto half = [&](double from) { return [&progress, from](double x) { return progress(from + 0.5 * x); }; };
-    exact_comparisons_ = cells_across_largest_facets(dt, cells, terminal, across_, half(0.0));
+    // The cell across the largest facet of each cell is written straight into the sets as its
+    // parent: these parents form a forest but for the pairs of cells across the same facet,
+    // whose cell of higher position is taken as the root. No array of them is kept (24 MB at
+    // 1M points): the few that are needed later are found again (`across()`).
+    exact_comparisons_ = for_each_cell_across_largest_facet(
+      dt, cells, terminal_, [this](std::uint32_t p, std::uint32_t q) { if(p != q) sets_.set_parent(p, q); },
+      half(0.0));
+    sets_.set_forest_of_parents();
     for(std::uint32_t s : sinks) sink_root_ = sink_root_ == none ? sets_.find(s) : sets_.unite(sink_root_, s);
     for(std::uint32_t s : sources)
       source_root_ = source_root_ == none ? sets_.find(s) : sets_.unite(source_root_, s);
-    for(std::uint32_t c = 0; c < across_.size(); ++c) {
-      if(c + 16 < across_.size()) sets_.prefetch(across_[c + 16]); // read at random
-      if(across_[c] != c) sets_.unite(c, across_[c]);
-    }
     sets_.flatten(); // the filter below then reads one parent per cell
     sink_root_ = sets_.find(sink_root_);
     if(source_root_ != none) source_root_ = sets_.find(source_root_);
@@ -101,8 +103,21 @@ public:
   void release_graph() { graph_.reset(); }
   // the sorted facets, given away (the graph keeps none)
   std::vector<Dual_edge_record> release_records() { return graph_->release_records(); }
-  // per cell position: the cell across its largest facet, or the cell itself if not contracted
-  const std::vector<std::uint32_t>& across() const { return across_; }
+  std::size_t number_of_cells() const { return terminal_.size(); }
+  // whether the cell at position `c` was contracted (it is neither a terminal nor infinite)
+  bool is_contracted(std::uint32_t c) const
+  {
+    return !terminal_[c] && !cells_.element(c)->has_vertex(dt_.infinite_vertex());
+  }
+  // the cell across the largest facet of the cell at position `c`, or `c` itself if it was
+  // not contracted (found again: a few reads and the comparisons of the contraction)
+  std::uint32_t across(std::uint32_t c) const
+  {
+    if(!is_contracted(c)) return c;
+    std::size_t exact = 0;
+    const Cell& cell = *cells_.element(c);
+    return cells_.index(&*cell.neighbor(internal::largest_facet(cell, exact)));
+  }
   Union_find& sets() { return sets_; }
   const Union_find& sets() const { return sets_; }
   std::uint32_t sink_root() const { return sink_root_; }
@@ -115,7 +130,7 @@ public:
   // finite cell, or the one of lower address if both are finite.
   std::pair<std::uint32_t, int> largest_facet(std::uint32_t c) const
   {
-    return Graph::facet_between(dt_, cells_, c, across_[c]);
+    return Graph::facet_between(dt_, cells_, c, across(c));
   }
 
   Triangle_coordinates_3 coordinates(std::pair<std::uint32_t, int> facet) const
@@ -133,8 +148,8 @@ public:
 private:
   const Triangulation& dt_;
   const Handle_index_map<Cell>& cells_;
-  std::vector<std::uint32_t> across_;
   Union_find sets_;
+  std::vector<bool> terminal_; // per cell position: a source or a sink
   std::uint32_t sink_root_ = none, source_root_ = none;
   std::unique_ptr<Graph> graph_;
   std::size_t exact_comparisons_ = 0;
@@ -163,18 +178,23 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
   using Graph = Sorted_dual_graph_3<Triangulation>;
   using Facet = std::pair<std::uint32_t, int>;
   const auto& records = contracted.graph().records();
-  const std::vector<std::uint32_t>& across = contracted.across();
   const Union_find& labels = contracted.sets(); // flat: one read gives the root
+  const std::uint32_t n = std::uint32_t(contracted.number_of_cells());
 
-  // births of the components of the contraction, by number; the sinks' component has none
+  // births of the components of the contraction, by number; the sinks' component has none.
+  // The roots that were contracted are the cells of higher position of the pairs of cells
+  // across the same facet, their largest.
   struct Birth { Facet facet; double value; std::uint32_t cell; };
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs; // (lower cell, root)
+  for(std::uint32_t c = 0; c < n; ++c)
+    if(labels.find_in_flat(c) == c && contracted.is_contracted(c)) pairs.emplace_back(contracted.across(c), c);
+  std::sort(pairs.begin(), pairs.end());
   std::vector<Birth> births(1);
   std::vector<std::uint32_t> roots(1, contracted.sink_root());
-  for(std::uint32_t c = 0; c < across.size(); ++c) {
-    const std::uint32_t d = across[c];
-    if(d == c || across[d] != c || d < c) continue;
-    const Facet f = contracted.largest_facet(c);
-    roots.push_back(labels.find_in_flat(c));
+  for(const auto& [c, root] : pairs) {
+    CGAL_assertion(c < root && contracted.across(c) == root);
+    const Facet f = Graph::facet_between(contracted.triangulation(), contracted.cells(), c, root);
+    roots.push_back(root);
     // the cell that the full Kruskal pass would report: the owner of the facet
     births.push_back(Birth{f, contracted.key_value_of(f), f.first});
   }
@@ -226,8 +246,8 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
     // largest facet of all the contracted cells (a contraction, ratio 1).
     std::uint32_t first_cell = Contracted_dual_graph_3<Triangulation>::none;
     Facet first{};
-    for(std::uint32_t c = 0; c < across.size(); ++c) {
-      if(across[c] == c) continue;
+    for(std::uint32_t c = 0; c < n; ++c) {
+      if(!contracted.is_contracted(c)) continue;
       const Facet f = contracted.largest_facet(c);
       if(first_cell == Contracted_dual_graph_3<Triangulation>::none ||
          compare_triangle_order(contracted.coordinates(f), contracted.coordinates(first)) == LARGER) {
@@ -240,8 +260,8 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
                         "no finite cell can be taken as interior; give an interior point");
     // both cells were alone then: the younger is the one of larger position, unless the other
     // is a sink
-    const std::uint32_t other = across[first_cell];
-    best.cell = across[other] == other ? first_cell : (std::max)(first_cell, other);
+    const std::uint32_t other = contracted.across(first_cell);
+    best.cell = contracted.is_contracted(other) ? (std::max)(first_cell, other) : first_cell;
     best.persistence = 1;
     const double v = contracted.key_value_of(first);
     if(!(v > 0)) best.persistence = std::numeric_limits<double>::infinity();
@@ -303,8 +323,8 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
                                                                  const Progress& progress)
 {
   using Graph = Sorted_dual_graph_3<Triangulation>;
-  const std::vector<std::uint32_t>& across = contracted.across();
-  const std::size_t n = across.size();
+  auto across = [&contracted](std::uint32_t c) { return contracted.across(c); };
+  const std::size_t n = contracted.number_of_cells();
   const Union_find& labels = contracted.sets(); // flat: the component of a cell in one read
   auto label = [&labels](std::uint32_t c) { return labels.find_in_flat(c); };
   auto number = [&](std::uint32_t c) { return components[label(c)]; };
@@ -359,9 +379,9 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
     chain.clear();
     for(;;) {
       chain.push_back(c);
-      const std::uint32_t d = across[c];
+      const std::uint32_t d = across(c);
       if(d == c) return;
-      if(across[d] == c) { chain.push_back(d); return; }
+      if(across(d) == c) { chain.push_back(d); return; }
       c = d;
     }
   };
@@ -411,7 +431,7 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
 
   // the source's side of the tree without that edge
   std::uint32_t cut_a = 0, cut_b = 0; // the cells of the smallest edge
-  if(smallest.contraction) { cut_a = smallest.index; cut_b = across[smallest.index]; }
+  if(smallest.contraction) { cut_a = smallest.index; cut_b = across(smallest.index); }
   else {
     const auto& r = contracted.graph().records()[tree[smallest.index]];
     cut_a = Graph::owner_position(r);
@@ -440,7 +460,7 @@ std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual
     auto node = [&](std::uint32_t c) { return label(c) == split_label ? c : label(c); };
     for(std::uint32_t c = 0; c < n; ++c) {
       if(label(c) != split_label) continue;
-      const std::uint32_t d = across[c];
+      const std::uint32_t d = across(c);
       if(d == c || (c == cut_a && d == cut_b) || (c == cut_b && d == cut_a)) continue;
       sides.unite(c, d);
     }

@@ -338,18 +338,6 @@ std::size_t for_each_cell_across_largest_facet(const Triangulation& dt,
   return exact;
 }
 
-// Fills `across[p]` with the q of `for_each_cell_across_largest_facet()`.
-template <class Triangulation, class Progress>
-std::size_t cells_across_largest_facets(const Triangulation& dt,
-                                        const Handle_index_map<typename Triangulation::Cell>& cells,
-                                        const std::vector<bool>& terminal, std::vector<std::uint32_t>& across,
-                                        const Progress& progress)
-{
-  across.resize(cells.size());
-  return for_each_cell_across_largest_facet(
-    dt, cells, terminal, [&across](std::uint32_t p, std::uint32_t q) { across[p] = q; }, progress);
-}
-
 // Fills the order fields of a report (closed or open surfaces) from a contracted dual graph
 // (`Contracted_dual_graph_3` or `Contracted_homologous_graph_3`).
 template <class Contracted, class Report>

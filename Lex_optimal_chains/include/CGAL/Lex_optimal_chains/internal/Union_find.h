@@ -51,14 +51,64 @@ public:
     }
   }
 
-  // Points every element directly at its root.
+  // Sets the parent of `x` (which must be alone) to `p`, for `set_forest_of_parents()`.
+  void set_parent(Index x, Index p)
+  {
+    CGAL_precondition(parent_[x] == x && p < parent_.size());
+    parent_[x] = p;
+  }
+
+  // Makes the sets of the parents given by `set_parent()`, which form a forest but for cycles
+  // of two elements (x -> y -> x), broken at the element of larger index, which becomes a
+  // root. The ranks stay 0: they only balance the later links.
+  void set_forest_of_parents()
+  {
+    const Index n = Index(parent_.size());
+    constexpr Index ahead = 16; // the parents' parents, read at random, are fetched early
+    for(Index x = 0; x < n; ++x) {
+      if(x + ahead < n) prefetch_address(parent_.data() + parent_[x + ahead]);
+      const Index p = parent_[x];
+      // p < x: p's parent is final already, and it is x only if p is the smaller of a pair
+      if(p < x && parent_[p] == x) parent_[x] = x;
+    }
+    CGAL_assertion(is_forest()); // a cycle would make find() loop forever
+  }
+
+  // whether the parent pointers lead every element to a root (no cycle): O(n)
+  bool is_forest() const
+  {
+    constexpr Index unknown = Index(-1), rooted = Index(-2);
+    std::vector<Index> state(parent_.size(), unknown); // or the element whose walk reached it
+    for(Index x = 0; x < parent_.size(); ++x) {
+      Index y = x;
+      while(state[y] == unknown && parent_[y] != y) { state[y] = x; y = parent_[y]; }
+      if(state[y] == x) return false; // back on this walk: a cycle
+      for(Index z = x; state[z] == x; z = parent_[z]) state[z] = rooted; // it ends at a root
+      state[y] = rooted;
+    }
+    return true;
+  }
+
+  // Points every element directly at its root. Full path compression from each element, so
+  // that every element is written once (the trees of `set_forest_of_parents()` can be
+  // hundreds deep).
   void flatten()
   {
+    std::vector<Index> path;
     const Index n = Index(parent_.size());
     constexpr Index ahead = 16; // the parents, read at random, are fetched early
     for(Index x = 0; x < n; ++x) {
       if(x + ahead < n) prefetch_address(parent_.data() + parent_[x + ahead]);
-      parent_[x] = find(x);
+      path.clear();
+      Index y = x;
+      for(;;) { // up to an element that is a root or points at one
+        const Index p = parent_[y];
+        if(p == y || parent_[p] == p) break;
+        path.push_back(y);
+        y = p;
+      }
+      const Index root = parent_[y];
+      for(const Index z : path) parent_[z] = root;
     }
   }
 
