@@ -163,19 +163,26 @@ public:
     std::vector<std::uint32_t> copies; // vertex number of each copy, in the canonical order
     {
       std::vector<std::uint32_t> first_corner; // of each copy, in walk order
-      std::vector<std::uint64_t> canonical;    // (first canonical corner << 32) | walk id
       for(std::uint32_t c = 0; c < 3 * nf; ++c) {
         if(corner_vertex_[c] != UINT32_MAX) continue;
         const std::uint32_t id = std::uint32_t(first_corner.size());
         first_corner.push_back(c);
-        std::uint32_t x = c, first = UINT32_MAX;
+        std::uint32_t x = c;
         do {
           corner_vertex_[x] = id;
-          first = (std::min)(first, 3 * rank_of_[x / 3] + x % 3);
           x = next_corner_around_vertex(x);
         } while(x != c);
-        canonical.push_back((std::uint64_t(first) << 32) | id);
       }
+      // the first canonical corner of each copy, in a pass in memory order (in the walks, the
+      // ranks were one more read at random per step)
+      std::vector<std::uint32_t> first(first_corner.size(), UINT32_MAX);
+      for(std::uint32_t c = 0; c < 3 * nf; ++c) {
+        std::uint32_t& f = first[corner_vertex_[c]];
+        f = (std::min)(f, 3 * rank_of_[c / 3] + c % 3);
+      }
+      std::vector<std::uint64_t> canonical(first.size()); // (first canonical corner << 32) | walk id
+      for(std::uint32_t id = 0; id < first.size(); ++id) canonical[id] = (std::uint64_t(first[id]) << 32) | id;
+      std::vector<std::uint32_t>().swap(first);
       std::vector<std::uint64_t> buffer;
       radix_sort_high_words(canonical, buffer);
       std::vector<std::uint64_t>().swap(buffer);
@@ -206,21 +213,18 @@ public:
     std::vector<Point>().swap(vertex_points_);
     std::vector<std::uint32_t>().swap(copies);
 
-    // components and their genus (Euler characteristic V - E + F, with E = 3F/2)
+    // components and the sum of their genera: every component is a closed oriented surface,
+    // of even Euler characteristic V - E + F = V - F/2 (E = 3F/2), and genus (2 - chi) / 2, so
+    // the sum is the number of components minus half the total characteristic
     {
       Union_find components(nf);
-      for(std::uint32_t h = 0; h < 3 * nf; ++h) components.unite(h / 3, twin_[h] / 3);
-      std::vector<std::uint32_t> v_count(nf, 0), f_count(nf, 0);
-      for(std::uint32_t k = 0; k < nf; ++k) ++f_count[components.find(k)];
-      std::vector<std::uint8_t> seen(points_.size(), 0);
-      for(std::uint32_t c = 0; c < 3 * nf; ++c)
-        if(!seen[corner_vertex_[c]]) { seen[corner_vertex_[c]] = 1; ++v_count[components.find(c / 3)]; }
+      for(std::uint32_t h = 0; h < 3 * nf; ++h)
+        if(h < twin_[h]) components.unite(h / 3, twin_[h] / 3); // each edge once
       for(std::uint32_t k = 0; k < nf; ++k)
-        if(components.find(k) == k) {
-          ++stats_.components;
-          const std::int64_t f = f_count[k], chi = std::int64_t(v_count[k]) - 3 * f / 2 + f;
-          stats_.genus += long((2 - chi) / 2);
-        }
+        if(components.find(k) == k) ++stats_.components;
+      const std::int64_t chi = std::int64_t(points_.size()) - std::int64_t(nf) / 2;
+      CGAL_assertion(nf % 2 == 0 && chi % 2 == 0);
+      stats_.genus = long(std::int64_t(stats_.components) - chi / 2);
     }
 
     // half-edges and corners renumbered in the canonical order of the facets (3 * rank + e),
