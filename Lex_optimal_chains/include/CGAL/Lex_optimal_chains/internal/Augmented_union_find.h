@@ -13,6 +13,7 @@
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
+#include <CGAL/Lex_optimal_chains/internal/Union_find.h>
 #include <CGAL/Lex_optimal_chains/internal/Zeroed_bytes.h>
 
 #include <CGAL/assertions.h>
@@ -140,20 +141,10 @@ public:
     CGAL_assertion(is_forest()); // a cycle would make find() loop forever
   }
 
-  // whether the parent pointers lead every element to a root (no cycle): O(n), each element
-  // walked once
+  // whether the parent pointers lead every element to a root (no cycle)
   bool is_forest() const
   {
-    constexpr Index unknown = Index(-1), rooted = Index(-2);
-    std::vector<Index> state(nodes_.size(), unknown); // or the element whose walk reached it
-    for(Index x = 0; x < nodes_.size(); ++x) {
-      Index y = x;
-      while(state[y] == unknown && nodes_[y].parent() != y) { state[y] = x; y = nodes_[y].parent(); }
-      if(state[y] == x) return false; // back on this walk: a cycle
-      for(Index z = x; state[z] == x; z = nodes_[z].parent()) state[z] = rooted; // it ends at a root
-      state[y] = rooted;
-    }
-    return true;
+    return is_forest_of_parents(nodes_.size(), [this](Index x) { return nodes_[x].parent(); });
   }
 
   // `find(x)` when every element points directly at its root (after `flatten()`, before any

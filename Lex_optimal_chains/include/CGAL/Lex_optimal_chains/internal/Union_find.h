@@ -18,6 +18,24 @@ namespace CGAL {
 namespace Lex_optimal_chains {
 namespace internal {
 
+// Whether the parent pointers `parent(x)` of the elements [0, n) lead every element to a root
+// (an element that is its own parent), with no cycle: O(n), each element walked once.
+template <class Parent>
+bool is_forest_of_parents(std::size_t n, const Parent& parent)
+{
+  using Index = std::uint32_t;
+  constexpr Index unknown = Index(-1), rooted = Index(-2);
+  std::vector<Index> state(n, unknown); // or the element whose walk reached it
+  for(Index x = 0; x < n; ++x) {
+    Index y = x;
+    while(state[y] == unknown && parent(y) != y) { state[y] = x; y = parent(y); }
+    if(state[y] == x) return false; // back on this walk: a cycle
+    for(Index z = x; state[z] == x; z = parent(z)) state[z] = rooted; // it ends at a root
+    state[y] = rooted;
+  }
+  return true;
+}
+
 // Disjoint sets over the dense indices [0, n): path halving and union by rank.
 // Ranks (at most log2 n < 256) are bytes in a separate array, so that `find` touches one
 // 32-bit word per step; the bytes of the elements that are never linked as roots are never
@@ -74,19 +92,10 @@ public:
     CGAL_assertion(is_forest()); // a cycle would make find() loop forever
   }
 
-  // whether the parent pointers lead every element to a root (no cycle): O(n)
+  // whether the parent pointers lead every element to a root (no cycle)
   bool is_forest() const
   {
-    constexpr Index unknown = Index(-1), rooted = Index(-2);
-    std::vector<Index> state(parent_.size(), unknown); // or the element whose walk reached it
-    for(Index x = 0; x < parent_.size(); ++x) {
-      Index y = x;
-      while(state[y] == unknown && parent_[y] != y) { state[y] = x; y = parent_[y]; }
-      if(state[y] == x) return false; // back on this walk: a cycle
-      for(Index z = x; state[z] == x; z = parent_[z]) state[z] = rooted; // it ends at a root
-      state[y] = rooted;
-    }
-    return true;
+    return is_forest_of_parents(parent_.size(), [this](Index x) { return parent_[x]; });
   }
 
   // Points every element directly at its root. Full path compression from each element, so
