@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -54,6 +55,7 @@ struct Cell_facets_3
   // after `classify(j)`: the facet is certainly acute (its radii may not be computed yet)
   bool acute[4] = {false, false, false, false};
   double longest_length[4] = {0, 0, 0, 0}; // after `classify(j)`: the largest squared edge length of facet j
+  std::optional<Triangle_order_key_3> keys[4]; // made by `key(j)`
 
   template <class Cell>
   explicit Cell_facets_3(const Cell& c)
@@ -188,7 +190,14 @@ struct Cell_facets_3
     }
     if(c != 0) return c;
     ++exact;
-    return compare_triangle_order(facet(a), facet(b)) == SMALLER ? -1 : 1;
+    return key(a) < key(b) ? -1 : 1;
+  }
+
+  // the facet as a key of the exact order, made once (a facet can be compared with several)
+  const Triangle_order_key_3& key(int j)
+  {
+    if(!keys[j]) keys[j].emplace(facet(j));
+    return *keys[j];
   }
 
   // The largest facet. R_B^2 of a triangle lies between (longest edge)^2 / 4 and

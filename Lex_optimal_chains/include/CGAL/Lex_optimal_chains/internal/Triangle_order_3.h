@@ -14,6 +14,7 @@
 // with interval arithmetic, then, when the intervals cannot decide, with exact rationals.
 
 #include <CGAL/Exact_rational.h>
+#include <CGAL/Number_types/internal/Exact_type_selector.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
@@ -22,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace CGAL {
 namespace Lex_optimal_chains {
@@ -119,11 +121,16 @@ inline Comparison_result compare_sorted_vertices(Triangle_coordinates_3 s, Trian
   return EQUAL;
 }
 
-// A triangle with its radii evaluated once with intervals, for repeated comparisons.
+// A triangle with its radii evaluated once with intervals (and once exactly, when a comparison
+// needs it), for repeated comparisons.
 class Triangle_order_key_3
 {
 public:
   using Interval = Interval_nt<false>;
+  // the exact evaluations use only ring operations on doubles: a floating-point type with an
+  // exact multiprecision mantissa (CGAL::Mpzf where available) is exact for them, and much
+  // faster than rationals, which reduce every result by a gcd
+  using Exact = CGAL::internal::Exact_ring_selector<double>::Type;
 
   Triangle_order_key_3() = default;
 
@@ -140,7 +147,9 @@ public:
 
   friend Comparison_result compare(const Triangle_order_key_3& a, const Triangle_order_key_3& b)
   {
-    if(a.filtered_ && b.filtered_) {
+    // (two keys evaluated exactly already: most likely a tie, which the intervals would only
+    // detect by throwing)
+    if(a.filtered_ && b.filtered_ && !(a.exact_ && b.exact_)) {
       Protect_FPU_rounding<true> protection;
       try {
         const Comparison_result c = compare_radii(a.coordinates_, a.radii_, b.coordinates_, b.radii_);
@@ -148,8 +157,7 @@ public:
         return compare_sorted_vertices(a.coordinates_, b.coordinates_);
       } catch(Uncertain_conversion_exception&) {}
     }
-    const Comparison_result c = compare_radii(a.coordinates_, squared_radii<Exact_rational>(a.coordinates_),
-                                              b.coordinates_, squared_radii<Exact_rational>(b.coordinates_));
+    const Comparison_result c = compare_radii(a.coordinates_, a.exact(), b.coordinates_, b.exact());
     if(c != EQUAL) return c;
     return compare_sorted_vertices(a.coordinates_, b.coordinates_);
   }
@@ -160,9 +168,17 @@ public:
   }
 
 private:
+  // the exact radii, computed at the first comparison that the intervals cannot decide
+  const Squared_radii_3<Exact>& exact() const
+  {
+    if(!exact_) exact_ = squared_radii<Exact>(coordinates_);
+    return *exact_;
+  }
+
   Triangle_coordinates_3 coordinates_;
   Squared_radii_3<Interval> radii_;
   bool filtered_ = false;
+  mutable std::optional<Squared_radii_3<Exact>> exact_;
 };
 
 inline Comparison_result compare_triangle_order(const Triangle_coordinates_3& s,
