@@ -29,7 +29,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -75,22 +77,31 @@ static std::vector<std::vector<Point>> read_polylines(const std::string& path)
   std::vector<std::vector<Point>> polylines;
   std::string line;
   for(int number = 1; std::getline(in, line); ++number) {
+    const std::string where = "line " + std::to_string(number) + " of '" + path + "'";
     std::istringstream ls(line);
-    long n;
-    if(!(ls >> n)) {
-      if(line.find_first_not_of(" \t\r") == std::string::npos) continue; // blank line
-      throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "' does not start with a number of points");
-    }
-    if(n < 0 || n > 100000000) throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "': bad number of points");
+    std::vector<std::string> tokens;
+    for(std::string t; ls >> t;) tokens.push_back(t);
+    if(tokens.empty()) continue; // blank line
+    char* end = nullptr;
+    const long n = std::strtol(tokens[0].c_str(), &end, 10);
+    if(*end != '\0' || end == tokens[0].c_str())
+      throw std::invalid_argument(where + " does not start with a whole number of points, but '" + tokens[0] + "'");
+    if(n < 0 || n > 100000000) throw std::invalid_argument(where + ": bad number of points " + tokens[0]);
+    if(tokens.size() != std::size_t(1 + 3 * n))
+      throw std::invalid_argument(where + " announces " + tokens[0] + " points (" + std::to_string(3 * n) +
+                                  " coordinates) but has " + std::to_string(tokens.size() - 1) + " coordinates");
     std::vector<Point> polyline;
+    double c[3];
     for(long i = 0; i < n; ++i) {
-      double x, y, z;
-      if(!(ls >> x >> y >> z))
-        throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "' has fewer than " + std::to_string(n) + " points");
-      polyline.emplace_back(x, y, z);
+      for(int k = 0; k < 3; ++k) {
+        const std::string& t = tokens[std::size_t(1 + 3 * i + k)];
+        c[k] = std::strtod(t.c_str(), &end);
+        if(*end != '\0' || end == t.c_str() || !std::isfinite(c[k]))
+          throw std::invalid_argument(where + ": coordinate '" + t + "' of point " + std::to_string(i + 1) +
+                                      " is not a finite number");
+      }
+      polyline.emplace_back(c[0], c[1], c[2]);
     }
-    std::string rest;
-    if(ls >> rest) throw std::invalid_argument("line " + std::to_string(number) + " of '" + path + "' has more than " + std::to_string(n) + " points");
     polylines.push_back(std::move(polyline));
   }
   return polylines;
@@ -168,6 +179,10 @@ public:
     const std::string out_ext = lower_extension(output);
     if(out_ext != ".off" && out_ext != ".ply" && out_ext != ".obj")
       throw std::invalid_argument("output '" + output + "' must end in .off, .ply or .obj");
+    // checked before the reconstruction: the file is created (empty) and removed at the end
+    // unless it is written
+    if(!std::ofstream(tmp_))
+      throw std::runtime_error("cannot write '" + output + "' (no such directory, or no permission)");
   }
   ~Output_file() { std::error_code ignored; std::filesystem::remove(tmp_, ignored); }
   void write(const Mesh& mesh)
@@ -319,7 +334,12 @@ int main(int argc, char** argv)
   closed->add_option("--min-persistence", min_persistence,
                      "without --interior: how clearly the automatic interior must stand out (default 4; "
                      "lower it when the error says the most persistent void is below it)")
-    ->check(CLI::PositiveNumber);
+    ->check(CLI::Validator(
+      [](std::string& text) {
+        const double v = std::strtod(text.c_str(), nullptr);
+        return std::isfinite(v) && v > 0 ? std::string() : "must be a positive finite number, not " + text;
+      },
+      "POSITIVE"));
   closed->add_option("--threads", threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
   closed->add_flag("--json", json, "print one JSON line of statistics on stdout");
 
@@ -342,8 +362,13 @@ int main(int argc, char** argv)
     app.parse(argc, argv);
     if(open->parsed() && boundary_file.empty() && !auto_boundary)
       throw CLI::RequiredError("--boundary or --auto-boundary");
-  } catch(const CLI::ParseError& e) {
+  } catch(const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch(const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch(const CLI::ParseError& e) { // one line and exit code 1, as for bad input
+    std::cerr << "lex_reconstruct: error: " << e.what() << " (see --help)" << std::endl;
+    return 1;
   }
   try {
     if(closed->parsed()) return run_closed(input, output, interior_text, exterior_text, min_persistence, threads, json);
