@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -32,7 +33,7 @@ using Partition = PPS::Line_partition_2<K>;
 static std::vector<K::Segment_2> read_segments(const std::string& file)
 {
   std::ifstream in(file);
-  if(!in) throw std::runtime_error("cannot read " + file);
+  if(!in || !std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot read " + file);
   std::vector<K::Segment_2> segments;
   std::string line;
   for(std::size_t number = 1; std::getline(in, line); ++number) {
@@ -59,12 +60,11 @@ static std::string extension(const std::string& file)
 }
 
 // the edges of both partitions side by side, before on the left
-static void write_svg(const std::string& file, const Partition& before, const Partition& after)
+static void write_svg(std::ostream& out, const Partition& before, const Partition& after)
 {
   CGAL::Bbox_2 box;
   for(std::size_t e = 0; e < before.number_of_edges(); ++e) box += before.segment(e).bbox();
   const double w = box.xmax() - box.xmin(), h = box.ymax() - box.ymin(), gap = 0.05 * w;
-  std::ofstream out(file);
   out << "<svg xmlns='http://www.w3.org/2000/svg' viewBox='" << box.xmin() - gap << ' ' << -box.ymax() - gap
       << ' ' << 2 * w + 3 * gap << ' ' << h + 2 * gap << "' width='1200'>\n";
   const double stroke = 0.002 * w;
@@ -96,13 +96,23 @@ int main(int argc, char** argv)
   app.add_option("--alpha-max", alpha_max, "angle to 90 degrees under which lines are pulled to orthogonality");
   app.add_option("--svg", svg, "draws the partition before and after, side by side");
   app.add_flag("--json", json, "prints one JSON line of statistics");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch(const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch(const CLI::ParseError& e) { // one line and exit code 1, as for bad input
+    std::cerr << "simplify_partition: error: " << e.what() << " (see --help)" << std::endl;
+    return 1;
+  }
 
   const std::string format = extension(output);
-  const std::string temporary = output + ".partial";
+  const std::string temporary = output + ".partial", svg_temporary = svg + ".partial";
   try {
     if(format != "geojson" && format != "json" && format != "wkt")
-      throw std::runtime_error("unknown output format '." + format + "': use .geojson, .json or .wkt");
+      throw std::runtime_error("output '" + output + "' must end in .geojson, .json or .wkt");
+    // both files are created (empty, under their temporary names) before the work
+    if(!std::ofstream(temporary)) throw std::runtime_error("cannot write " + output);
+    if(!svg.empty() && !std::ofstream(svg_temporary)) throw std::runtime_error("cannot write " + svg);
     const std::vector<K::Segment_2> segments = read_segments(input);
 
     const auto t0 = std::chrono::steady_clock::now();
@@ -120,14 +130,23 @@ int main(int argc, char** argv)
     partition.cells(std::back_inserter(cells));
     {
       std::ofstream out(temporary);
-      if(!out) throw std::runtime_error("cannot write " + output);
+      out.precision(17); // coordinates in the millions (projected) keep their centimeters
       if(format == "wkt") CGAL::IO::write_multi_polygon_WKT(out, cells);
       else PPS::IO::write_GeoJSON(out, cells);
+      out.close();
       if(!out) throw std::runtime_error("cannot write " + output);
+    }
+    if(!svg.empty()) {
+      std::ofstream out(svg_temporary);
+      out.precision(17);
+      write_svg(out, before, partition);
+      out.close();
+      if(!out) throw std::runtime_error("cannot write " + svg);
     }
     if(std::rename(temporary.c_str(), output.c_str()) != 0)
       throw std::runtime_error("cannot write " + output);
-    if(!svg.empty()) write_svg(svg, before, partition);
+    if(!svg.empty() && std::rename(svg_temporary.c_str(), svg.c_str()) != 0)
+      throw std::runtime_error("cannot write " + svg);
 
     if(json) {
       nlohmann::json j;
@@ -157,6 +176,7 @@ int main(int argc, char** argv)
     }
   } catch(const std::exception& e) {
     std::remove(temporary.c_str());
+    if(!svg.empty()) std::remove(svg_temporary.c_str());
     std::cerr << "simplify_partition: error: " << e.what() << std::endl;
     return 1;
   }

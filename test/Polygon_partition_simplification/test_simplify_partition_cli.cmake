@@ -43,6 +43,11 @@ expect_failure(format "${WORK}/good.txt" "${WORK}/good.shp")
 expect_failure(negative_weight "${WORK}/good.txt" "${WORK}/negative.geojson" --lambda1 -1)
 expect_failure(angle "${WORK}/good.txt" "${WORK}/angle.geojson" --alpha-max 100)
 expect_failure(zero_epsilon "${WORK}/good.txt" "${WORK}/epsilon.geojson" --epsilon 0)
+expect_failure(not_a_number "${WORK}/good.txt" "${WORK}/abc.geojson" --lambda1 abc)
+expect_failure(unknown_option "${WORK}/good.txt" "${WORK}/bogus.geojson" --bogus)
+expect_failure(no_extension "${WORK}/good.txt" "${WORK}/no_extension")
+expect_failure(directory_input "${WORK}" "${WORK}/directory.geojson")
+expect_failure(svg_directory "${WORK}/good.txt" "${WORK}/svg.geojson" --svg "${WORK}/no_such_directory/x.svg")
 
 # Good input: GeoJSON and WKT, the JSON line with its keys, the SVG.
 execute_process(COMMAND "${PROGRAM}" "${DATA}/footprints_25.txt" "${WORK}/out.geojson" --json --svg "${WORK}/out.svg"
@@ -68,5 +73,14 @@ execute_process(COMMAND "${PROGRAM}" "${DATA}/footprints_25.txt" "${WORK}/out.wk
 file(READ "${WORK}/out.wkt" wkt)
 if(NOT rc EQUAL 0 OR NOT wkt MATCHES "^MULTIPOLYGON")
   message(FATAL_ERROR "no WKT multipolygon written")
+endif()
+# projected coordinates (millions of meters) keep their decimals in WKT as in GeoJSON: the
+# square of good.txt moved to (500000, 4000000), its corners within 1 mm of their place
+file(WRITE "${WORK}/projected.txt" "500000 4000000 500010 4000000\n500010 4000000 500010 4000010\n"
+     "500010 4000010 500000 4000010\n500000 4000010 500000 4000000\n500003 4000005 500007 4000005.1\n")
+execute_process(COMMAND "${PROGRAM}" "${WORK}/projected.txt" "${WORK}/projected.wkt" RESULT_VARIABLE rc OUTPUT_QUIET)
+file(READ "${WORK}/projected.wkt" wkt)
+if(NOT rc EQUAL 0 OR wkt MATCHES "e\\+0" OR NOT wkt MATCHES "4000000\\.0|4000009\\.99|4000010 ")
+  message(FATAL_ERROR "WKT coordinates lost their precision: ${wkt}")
 endif()
 message(STATUS "simplify_partition: ${json}")
