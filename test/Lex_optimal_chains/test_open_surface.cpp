@@ -97,6 +97,21 @@ void test_height_field(CGAL::Random& rng)
   const std::vector<Point> polygon = LOC::footprint_boundary(points);
   const std::set<std::pair<Point, Point>> polygon_edges = edges_of_polyline(polygon);
   const std::vector<std::vector<Point>> boundary{polygon};
+  // scaled by a power of two, exactly, the footprint is the same polygon scaled, also where
+  // squared distances in input units would overflow (2^600) or underflow (2^-900)
+  for(const int e : {600, -900}) {
+    std::vector<Point> scaled;
+    for(const Point& p : points) scaled.emplace_back(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e));
+    const std::vector<Point> scaled_polygon = LOC::footprint_boundary(scaled);
+    assert(scaled_polygon.size() == polygon.size());
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+      assert(scaled_polygon[i] == Point(std::ldexp(polygon[i].x(), e), std::ldexp(polygon[i].y(), e),
+                                        std::ldexp(polygon[i].z(), e)));
+  }
+  {
+    const std::vector<Point> huge{Point(-1.7e308, 0, 0), Point(1.7e308, 1, 0), Point(0, 1e308, 1)};
+    expect_error(LOC::Input_error_code::TOO_LARGE, [&] { LOC::footprint_boundary(huge); });
+  }
   for(const auto field : {LOC::Coefficient_field::Q, LOC::Coefficient_field::Z2}) {
     Mesh mesh;
     const auto report = CGAL::lex_optimal_open_surface_reconstruction(points, boundary, mesh, LOC::parameters::coefficient_field(field));

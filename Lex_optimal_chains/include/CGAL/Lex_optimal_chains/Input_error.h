@@ -23,7 +23,7 @@ enum class Input_error_code
   CONSTRAINT_OUTSIDE_HULL,     ///< an interior point lies outside the convex hull of the points
   CONFLICTING_CONSTRAINTS,     ///< an interior and an exterior constraint fall in the same cell
   NO_INTERIOR_FOUND,           ///< no interior point was given and none could be chosen
-  TOO_LARGE,                   ///< the input exceeds a size limit (2^30 cells, 2^31 in an intersection product, simplex dimension)
+  TOO_LARGE,                   ///< the input exceeds a size limit (2^30 cells, 2^31 in an intersection product, simplex dimension, a footprint beyond the range of doubles)
   INVALID_GRAPH,               ///< a graph given to the generic min-cut is not valid
   CANCELLED,                   ///< the progress callback asked to stop
   OPEN_POLYLINE,               ///< a boundary polyline does not end where it starts

@@ -65,8 +65,9 @@ drop them with `drop_boundary_triangles(true)`.
 \param np optional `point_map`
 \param margin the margin, relative to the larger side of the footprint
 \param vertices_per_side the number of edges of each side of the polygon
-\throws Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`, or
-`DEGENERATE_POINT_SET` when the footprint is a single point.
+\throws Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`,
+`DEGENERATE_POINT_SET` when the footprint is a single point, or `TOO_LARGE` when the
+footprint with its margin exceeds the range of doubles.
 */
 template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
 std::vector<typename boost::property_traits<typename GetPointMap<PointRange, NamedParameters>::const_type>::value_type>
@@ -97,6 +98,17 @@ footprint_boundary(const PointRange& points, const NamedParameters& np = paramet
   // corners of the enlarged rectangle, counterclockwise, and the outward normal of each side
   const double cx[4] = {xmin - m, xmax + m, xmax + m, xmin - m};
   const double cy[4] = {ymin - m, ymin - m, ymax + m, ymax + m};
+  if(!std::isfinite(side) || !std::isfinite(cx[0]) || !std::isfinite(cx[1]) || !std::isfinite(cy[0]) ||
+     !std::isfinite(cy[2]))
+    throw Input_error(Input_error_code::TOO_LARGE,
+                      "the footprint with its margin exceeds the range of doubles: scale the points");
+  // the squared distances below are taken in units of a power of two near the side (an exact
+  // scaling), so that they neither overflow nor underflow and the nearest points do not change
+  // when the input is scaled by a power of two
+  int exponent = 0;
+  std::frexp(side, &exponent);
+  double unit = std::ldexp(1.0, -exponent);
+  if(!std::isnormal(unit)) unit = exponent > 0 ? std::ldexp(1.0, -1022) : std::ldexp(1.0, 1022);
   const double nx[4] = {0, 1, 0, -1}, ny[4] = {-1, 0, 1, 0};
   std::vector<std::array<double, 2>> xy;
   for(int s = 0; s < 4; ++s) {
@@ -114,7 +126,7 @@ footprint_boundary(const PointRange& points, const NamedParameters& np = paramet
   for(const auto& e : points) {
     const Point& p = get(point_map, e);
     for(std::size_t v = 0; v < xy.size(); ++v) {
-      const double dx = p.x() - xy[v][0], dy = p.y() - xy[v][1];
+      const double dx = (p.x() - xy[v][0]) * unit, dy = (p.y() - xy[v][1]) * unit;
       const std::pair<double, double> candidate(dx * dx + dy * dy, p.z());
       std::vector<std::pair<double, double>>& heap = nearest[v];
       if(heap.size() < k) {
