@@ -28,8 +28,8 @@ A triangle \f$\sigma_1\f$ comes before \f$\sigma_2\f$ if
 \f$R_B\f$ equals \f$R_C\f$ for acute and right triangles and half the longest edge for obtuse
 ones, so obtuse triangles sharing their longest edge have exactly the same \f$R_B\f$.
 All comparisons are exact: squared radii are compared as fractions of polynomials in the
-coordinates, first with interval arithmetic and, when the intervals do not decide, with
-exact rationals.
+coordinates, first with interval arithmetic and, when the intervals do not decide, exactly
+(cross products of the fractions, in CGAL's exact ring type for doubles, `Mpzf` where available).
 
 \tparam K a CGAL kernel whose `FT` is `double` (e.g. `Exact_predicates_inexact_constructions_kernel`)
 */

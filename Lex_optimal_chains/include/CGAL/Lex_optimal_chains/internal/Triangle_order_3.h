@@ -11,7 +11,8 @@
 //                         triple of sigma1 is smaller (symbolic tie-break).
 // R_B is the radius of the smallest enclosing ball, R_C the circumradius. Everything is
 // compared on squared radii written as fractions of polynomials in the coordinates, first
-// with interval arithmetic, then, when the intervals cannot decide, with exact rationals.
+// with interval arithmetic, then, when the intervals cannot decide, exactly (the fractions are
+// compared by cross products: ring operations, exact in CGAL's exact ring type for doubles).
 
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Number_types/internal/Exact_type_selector.h>
