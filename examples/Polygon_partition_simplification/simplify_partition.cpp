@@ -143,10 +143,13 @@ int main(int argc, char** argv)
       out.close();
       if(!out) throw std::runtime_error("cannot write " + svg);
     }
-    if(std::rename(temporary.c_str(), output.c_str()) != 0)
-      throw std::runtime_error("cannot write " + output);
+    // the drawing first: if the cells cannot be renamed, no output is left (the drawing is removed)
     if(!svg.empty() && std::rename(svg_temporary.c_str(), svg.c_str()) != 0)
       throw std::runtime_error("cannot write " + svg);
+    if(std::rename(temporary.c_str(), output.c_str()) != 0) {
+      if(!svg.empty()) std::remove(svg.c_str());
+      throw std::runtime_error("cannot write " + output);
+    }
 
     if(json) {
       nlohmann::json j;

@@ -14,7 +14,6 @@
 // with interval arithmetic, then, when the intervals cannot decide, exactly (the fractions are
 // compared by cross products: ring operations, exact in CGAL's exact ring type for doubles).
 
-#include <CGAL/Exact_rational.h>
 #include <CGAL/Number_types/internal/Exact_type_selector.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Uncertain.h>
