@@ -249,6 +249,41 @@ void test_simple_configurations()
     CHECK(p.is_valid() && p.number_of_cells() == 4);
     CHECK(CGAL::simplify_polygon_partition_2(p).cells_after == 4 && p.is_valid());
   }
+  // Chains closed by ends that meet at time 0 and hang at a single point: the cell around them
+  // was not a simple polygon (the partition was invalid); a ray released from one of their
+  // corners splits it. An "X" whose two lower ends are joined (a triangle hanging at the
+  // crossing), and a loop with a reflex corner, whose first candidate ray goes into the loop.
+  for(const std::vector<K::Segment_2>& s :
+      {std::vector<K::Segment_2>{{{0, 0}, {3, 2}}, {{0, 2}, {3, 0}}, {{0, 0}, {3, 0}}},
+       std::vector<K::Segment_2>{{{1, 1}, {0, 1}}, {{4, 0}, {0, 3}}, {{2, 3}, {1, 1}}, {{3, 3}, {4, 3}}, {{4, 0}, {0, 1}}}}) {
+    const Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid());
+    // the same partition for the segments in another order, or reversed
+    std::vector<K::Segment_2> other(s.rbegin(), s.rend());
+    for(auto& x : other) x = x.opposite();
+    const Partition q = CGAL::kinetic_partition_2(other);
+    CHECK(q.is_valid() && q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
+          q.number_of_edges() == p.number_of_edges() && q.number_of_cells() == p.number_of_cells());
+    // the corners stay: every endpoint shared by two segments is a point of the partition
+    for(const auto& x : s)
+      for(const auto& end : {x.source(), x.target()}) {
+        if(std::count_if(s.begin(), s.end(), [&](const K::Segment_2& y) { return y.source() == end || y.target() == end; }) < 2)
+          continue;
+        bool found = false;
+        for(std::size_t v = 0; v < p.number_of_vertices() && !found; ++v)
+          found = CGAL::squared_distance(p.point(v), end) < 1e-20;
+        CHECK(found);
+      }
+  }
+  // a line that passes within rounding errors of a corner of the bounding rectangle (the
+  // diagonal y = x of a rectangle centered on it): the rectangle was cut into an edge whose
+  // ends rounded together, and the partition was not valid; the rectangle now keeps its
+  // corners away from the lines
+  {
+    std::vector<K::Segment_2> s{{{1, 2}, {1, 4}}, {{0, 0}, {1, 1}}, {{0, 3}, {1, 2}}};
+    const Partition p = CGAL::kinetic_partition_2(s);
+    CHECK(p.is_valid() && p.number_of_cells() == 3);
+  }
   // exactly collinear segments share one line
   {
     std::vector<K::Segment_2> s{{{0, 0}, {1, 1}}, {{3, 3}, {4, 4}}, {{0, 4}, {1, 4}}};
@@ -365,7 +400,7 @@ void test_builders()
     const Partition touching = PPS::line_partition_from_polygons_2(std::vector<CGAL::Polygon_2<K>>{square_at(0, 0, 4), diamond});
     CHECK(!touching.is_valid());
     // in a kinetic partition the contact point lies inside the rectangle: the cell around the
-    // two squares has a pinched hole (documented), and a small gap avoids it
+    // two squares would have a pinched hole
     auto walls = [](double gap) {
       std::vector<K::Segment_2> s;
       for(double o : {0., 1. + gap}) {
@@ -374,7 +409,8 @@ void test_builders()
       }
       return s;
     };
-    CHECK(!CGAL::kinetic_partition_2(walls(0)).is_valid() && CGAL::kinetic_partition_2(walls(0.01)).is_valid());
+    // (it was not valid; a ray released from one of the corners now splits that cell)
+    CHECK(CGAL::kinetic_partition_2(walls(0)).is_valid() && CGAL::kinetic_partition_2(walls(0.01)).is_valid());
   }
   // a polygon with a hole (a courtyard): 8 lines, 8 points, 8 edges, 2 cells (the ring and the yard)
   CGAL::Polygon_2<K> outer, yard;

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/snap_collinear_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 
@@ -96,9 +97,13 @@ from its lines: two exact intersection points closer than the precision of doubl
 on nearly identical lines farther apart than `collinearity_distance` that cross) can get the
 same coordinates, and the partition is then not valid (`Line_partition_2::is_valid()` says
 so, and `simplify_polygon_partition_2()` refuses it).
-It is not valid either when closed chains of segments touch at a point inside the rectangle
-(two squares sharing a corner): the cell around them has a hole that is not a simple polygon.
-Separating such chains by a small gap avoids it.
+Ends that meet at time 0 (segments sharing an endpoint) stop each other, so that corners
+stay corners. When a closed chain of such corners touches the rest of the partition at a
+single point (an "X" whose two lower ends are joined by a third segment; two squares sharing
+a corner), the cell around it would not be a simple polygon: the partition is then computed
+again with one or a few of these ends released, each going on from its corner, until it is
+valid (at most 16 propagations in all); when none of these is valid, the first partition is
+returned, and it is not valid.
 
 \throws Polygon_partition_simplification::Input_error when `segments` is empty
 (`EMPTY_INPUT`), has a NaN, infinite or huge coordinate (`NON_FINITE_COORDINATE`), a segment
@@ -177,7 +182,27 @@ kinetic_partition_2(const SegmentRange& segments,
   for(const auto& c : input) { endpoints.push_back({c[0], c[1]}); endpoints.push_back({c[2], c[3]}); }
   const PPS::internal::Enclosing_rectangle_2 rectangle = PPS::internal::enclosing_rectangle(endpoints);
   const double half_diagonal = rectangle.half_diagonal();
-  const auto corners = rectangle.corners(margin * half_diagonal);
+  // A line through a corner of the rectangle (a diagonal of a square), or within rounding
+  // errors of it, would meet the rectangle at a point that its corner rounds to, or next to
+  // it: the sides across the axis are moved out a little farther until every corner is at
+  // least 1e-6 half-diagonals from the line of every segment. A corner moves along the sides
+  // of the axis, which no line near it is parallel to (the segments are inside the rectangle).
+  double margin_across = margin * half_diagonal;
+  auto corners = rectangle.corners(margin * half_diagonal, margin_across);
+  auto near_a_line = [&]() {
+    for(const auto& q : corners)
+      for(const auto& c : input) {
+        const double dx = c[2] - c[0], dy = c[3] - c[1];
+        if(std::abs(dx * (q[1] - c[1]) - dy * (q[0] - c[0])) <= 1e-6 * half_diagonal * std::hypot(dx, dy) &&
+           CGAL::orientation(CGAL::Epick::Point_2(c[0], c[1]), CGAL::Epick::Point_2(c[2], c[3]), CGAL::Epick::Point_2(q[0], q[1])) != CGAL::COLLINEAR)
+          return true;
+      }
+    return false;
+  };
+  for(int attempt = 0; attempt < 16 && near_a_line(); ++attempt) {
+    margin_across *= 1.125;
+    corners = rectangle.corners(margin * half_diagonal, margin_across);
+  }
   std::array<EK::Point_2, 4> box;
   for(int k = 0; k < 4; ++k) box[k] = EK::Point_2(corners[k][0], corners[k][1]);
 
@@ -208,19 +233,81 @@ kinetic_partition_2(const SegmentRange& segments,
   std::vector<EK::Segment_2> distinct_segments;
   for(const auto& d : distinct) distinct_segments.push_back(d.first);
 
-  PPS::internal::Kinetic_propagation_2 propagation(distinct_segments, box, maximum_crossings, crossing_distance);
-  propagation.run();
-
-  std::vector<PPS::internal::Exact_piece> pieces;
-  pieces.reserve(distinct.size() + 4);
-  for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false, distinct[i].second});
-  for(int k = 0; k < 4; ++k) pieces.push_back({EK::Segment_2(box[k], box[(k + 1) % 4]), true});
-
   PPS::internal::Enclosing_rectangle_2 framed = rectangle;
   framed.half_extent = {rectangle.half_extent[0] + margin * half_diagonal,
-                        rectangle.half_extent[1] + margin * half_diagonal};
-  return PPS::internal::build_line_partition<K>(
-    pieces, metric_segments, PPS::internal::frame_of<typename Partition::Frame>(framed), input);
+                        rectangle.half_extent[1] + margin_across};
+  const auto frame = PPS::internal::frame_of<typename Partition::Frame>(framed);
+
+  // Ends that meet at time 0 stop each other, so that corners stay corners. A closed chain of
+  // such corners that touches the rest of the partition at a single point (an "X" of two
+  // segments whose ends are joined by a third one: the triangle hangs at the crossing; two
+  // squares sharing a corner) makes a cell whose boundary is not a simple polygon. Then rays
+  // stopped at time 0 at an end of a defective edge are released, each from its corner, and
+  // the propagation is run again: first each alone (the first four candidates, by increasing
+  // index: the segments are in a canonical order), for a ray that leaves the chain into the
+  // cell around it and splits the cell; then one more at each run, the first candidate of the
+  // partition of the previous run. The first valid partition is returned; after 16 runs, the
+  // first partition (invalid, as documented).
+  auto run = [&](const std::vector<std::size_t>& released, PPS::internal::Kinetic_propagation_2& propagation) {
+    for(std::size_t r : released) propagation.release(r);
+    propagation.run();
+    std::vector<PPS::internal::Exact_piece> pieces;
+    pieces.reserve(distinct.size() + 4);
+    for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false, distinct[i].second});
+    for(int k = 0; k < 4; ++k) pieces.push_back({EK::Segment_2(box[k], box[(k + 1) % 4]), true});
+    return PPS::internal::build_line_partition<K>(pieces, metric_segments, frame, input);
+  };
+  // the rays stopped at time 0 at an end of a defective edge of `p`, by increasing index
+  const double tolerance = 1e-9 * frame.scale;
+  auto candidates = [&](const Partition& p, const std::vector<std::size_t>& defective,
+                        const PPS::internal::Kinetic_propagation_2& propagation) {
+    std::vector<std::array<double, 2>> ends;
+    for(std::size_t e : defective)
+      for(std::size_t v : {p.edges()[e].source, p.edges()[e].target}) {
+        const auto q = p.point(v);
+        ends.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y())});
+      }
+    std::vector<std::size_t> rays;
+    for(std::size_t r = 0; r < propagation.number_of_rays(); ++r) {
+      if(!propagation.stopped_at_origin(r)) continue;
+      const double x = CGAL::to_double(propagation.origin(r).x()), y = CGAL::to_double(propagation.origin(r).y());
+      if(std::any_of(ends.begin(), ends.end(), [&](const std::array<double, 2>& q) {
+           return std::abs(q[0] - x) <= tolerance && std::abs(q[1] - y) <= tolerance;
+         }))
+        rays.push_back(r);
+    }
+    return rays;
+  };
+  PPS::internal::Kinetic_propagation_2 propagation(distinct_segments, box, maximum_crossings, crossing_distance);
+  const Partition partition = run({}, propagation);
+  const std::vector<std::size_t> defective = partition.defective_edges();
+  if(defective.empty()) return partition;
+  constexpr std::size_t maximum_runs = 16, maximum_single_runs = 5;
+  std::size_t runs = 1;
+  const std::vector<std::size_t> first_candidates = candidates(partition, defective, propagation);
+  for(std::size_t r : first_candidates) {
+    if(runs == maximum_single_runs) break;
+    PPS::internal::Kinetic_propagation_2 again(distinct_segments, box, maximum_crossings, crossing_distance);
+    Partition released = run({r}, again);
+    ++runs;
+    if(released.is_valid()) return released;
+  }
+  std::vector<std::size_t> released;
+  std::vector<std::size_t> next = first_candidates;
+  while(runs < maximum_runs) {
+    const auto r = std::find_if(next.begin(), next.end(), [&](std::size_t x) {
+      return std::find(released.begin(), released.end(), x) == released.end();
+    });
+    if(r == next.end()) break;
+    released.push_back(*r);
+    PPS::internal::Kinetic_propagation_2 again(distinct_segments, box, maximum_crossings, crossing_distance);
+    const Partition p = run(released, again);
+    ++runs;
+    const std::vector<std::size_t> d = p.defective_edges();
+    if(d.empty()) return p;
+    next = candidates(p, d, again);
+  }
+  return partition;
 }
 
 } // namespace CGAL

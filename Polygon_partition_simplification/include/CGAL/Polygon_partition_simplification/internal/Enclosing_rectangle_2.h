@@ -28,11 +28,12 @@ struct Enclosing_rectangle_2
   std::array<double, 2> half_extent{{0, 0}};   // along axis, along its normal
   double half_diagonal() const { return std::hypot(half_extent[0], half_extent[1]); }
 
-  // the four corners, counterclockwise, after moving every side outward by `margin`
-  std::array<std::array<double, 2>, 4> corners(double margin) const
+  // the four corners, counterclockwise, after moving the sides across the axis outward by
+  // `margin` and the two others by `margin_across`
+  std::array<std::array<double, 2>, 4> corners(double margin, double margin_across) const
   {
     const double u0 = axis[0], u1 = axis[1];
-    const double hu = half_extent[0] + margin, hv = half_extent[1] + margin;
+    const double hu = half_extent[0] + margin, hv = half_extent[1] + margin_across;
     std::array<std::array<double, 2>, 4> result;
     const double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
     for(int i = 0; i < 4; ++i)
