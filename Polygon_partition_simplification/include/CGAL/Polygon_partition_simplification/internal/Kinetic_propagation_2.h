@@ -42,6 +42,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <vector>
 
@@ -195,6 +196,10 @@ private:
     int box_side = 0; // the side of the rectangle at `box_parameter`
     double box_parameter_double = 0;
     std::vector<Candidate> candidates; // current batch, sorted, from `cursor` on
+    // their exact parameters, once computed: a cluster of nearly equal parameters is searched
+    // for its exact minimum at every event of the ray (n lines through one point: n events of
+    // n candidates each), and each new exact parameter is a new expression to evaluate
+    std::vector<std::optional<FT>> exact_parameters;
     std::size_t cursor = 0;
     Candidate last{-1., 0};           // last candidate taken (double order)
     bool box_listed = false;
@@ -274,6 +279,7 @@ private:
     }
     std::sort(found.begin(), found.end());
     ray.candidates = std::move(found);
+    ray.exact_parameters.assign(ray.candidates.size(), std::nullopt);
     ray.cursor = 0;
   }
 
@@ -353,7 +359,8 @@ private:
       FT best_parameter;
       for(std::size_t k = ray.cursor; k < end; ++k) {
         if(c[k].segment != box_candidate && is_parallel(r, c[k].segment)) continue;
-        const FT t = exact_parameter(ray, c[k].segment);
+        if(!ray.exact_parameters[k]) ray.exact_parameters[k] = exact_parameter(ray, c[k].segment);
+        const FT& t = *ray.exact_parameters[k];
         if(best == c.size()) { best = k; best_parameter = t; continue; }
         const CGAL::Comparison_result cmp = CGAL::compare(t, best_parameter);
         if(cmp == CGAL::SMALLER ||
@@ -365,6 +372,7 @@ private:
         continue;
       }
       std::swap(c[ray.cursor], c[best]);
+      std::swap(ray.exact_parameters[ray.cursor], ray.exact_parameters[best]);
       if(CGAL::sign(best_parameter) == CGAL::NEGATIVE) { // behind the origin: skip
         ray.last = std::max(ray.last, c[ray.cursor]);
         ++ray.cursor;
@@ -442,6 +450,8 @@ private:
       ray.stop_parameter = ray.head_parameter;
       ray.candidates.clear();
       ray.candidates.shrink_to_fit();
+      ray.exact_parameters.clear();
+      ray.exact_parameters.shrink_to_fit();
       return;
     }
     push_next(r);
