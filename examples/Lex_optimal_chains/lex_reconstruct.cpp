@@ -107,6 +107,74 @@ static std::vector<std::vector<Point>> read_polylines(const std::string& path)
   return polylines;
 }
 
+// CGAL's readers stop after the number of points that an OFF or PLY header declares: a header
+// that declares fewer than the file holds would drop points silently. For ASCII files (one
+// record per line) whose points come last (an OFF file without faces, a PLY file whose last
+// element is the vertices) the data lines are counted against the header. Binary PLY files,
+// and files with faces after the points (where an extra line may be an extra face), are not
+// checked.
+static void check_declared_counts(const std::string& input, const std::string& ext)
+{
+  std::ifstream in(input);
+  std::string line;
+  auto next_line = [&](bool skip_comments) {
+    while(std::getline(in, line)) {
+      const auto first = line.find_first_not_of(" \t\r");
+      if(first == std::string::npos) continue;
+      if(skip_comments && line[first] == '#') continue;
+      return true;
+    }
+    return false;
+  };
+  unsigned long long declared = 0; // records: points (OFF), elements (PLY)
+  std::string what, last_element;
+  if(ext == ".off") {
+    if(!next_line(true)) return;
+    std::istringstream header(line);
+    std::string keyword;
+    header >> keyword;
+    if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return; // CGAL decides
+    std::string rest;
+    std::getline(header, rest);
+    if(rest.find("BINARY") != std::string::npos) return;
+    if(rest.find_first_not_of(" \t\r") == std::string::npos) { if(!next_line(true)) return; rest = line; }
+    if(keyword.find("ST") != std::string::npos || keyword.find("4") != std::string::npos || keyword.find("n") != std::string::npos)
+      return; // dimension or texture variants: left to CGAL
+    std::istringstream counts(rest);
+    unsigned long long v = 0, f = 0;
+    if(!(counts >> v >> f)) return;
+    if(f != 0) return;
+    declared = v;
+    what = std::to_string(v) + " points";
+  } else if(ext == ".ply") {
+    if(!next_line(false) || line.rfind("ply", 0) != 0) return;
+    while(next_line(false) && line.rfind("end_header", 0) != 0) {
+      std::istringstream words(line);
+      std::string keyword, name;
+      words >> keyword;
+      if(keyword == "format") {
+        std::string format;
+        words >> format;
+        if(format != "ascii") return;
+      } else if(keyword == "element") {
+        unsigned long long count = 0;
+        if(!(words >> name >> count)) return;
+        declared += count;
+        what += (what.empty() ? "" : ", ") + std::to_string(count) + " " + name;
+        last_element = name;
+      }
+    }
+    if(last_element != "vertex") return;
+  } else
+    return;
+  unsigned long long records = 0;
+  while(next_line(ext == ".off")) {
+    if(++records > declared)
+      throw std::invalid_argument("input '" + input + "' holds more records than its header declares (" + what +
+                                  "): the points beyond would be ignored; fix the header");
+  }
+}
+
 static std::vector<Point> read_input_points(const std::string& input)
 {
   const std::string in_ext = lower_extension(input);
@@ -120,6 +188,7 @@ static std::vector<Point> read_input_points(const std::string& input)
   const bool read = CGAL::IO::read_points(input, std::back_inserter(points));
   std::cerr.rdbuf(saved);
   if(!read) throw std::invalid_argument("cannot read points from '" + input + "'");
+  check_declared_counts(input, in_ext);
   return points;
 }
 
