@@ -252,10 +252,13 @@ void test_simple_configurations()
   // Chains closed by ends that meet at time 0 and hang at a single point: the cell around them
   // was not a simple polygon (the partition was invalid); a ray released from one of their
   // corners splits it. An "X" whose two lower ends are joined (a triangle hanging at the
-  // crossing), and a loop with a reflex corner, whose first candidate ray goes into the loop.
+  // crossing); a loop with a reflex corner, whose first candidate ray goes into the loop; a
+  // chain whose corners are not at the ends of the defective edges (found by fuzzing).
   for(const std::vector<K::Segment_2>& s :
       {std::vector<K::Segment_2>{{{0, 0}, {3, 2}}, {{0, 2}, {3, 0}}, {{0, 0}, {3, 0}}},
-       std::vector<K::Segment_2>{{{1, 1}, {0, 1}}, {{4, 0}, {0, 3}}, {{2, 3}, {1, 1}}, {{3, 3}, {4, 3}}, {{4, 0}, {0, 1}}}}) {
+       std::vector<K::Segment_2>{{{1, 1}, {0, 1}}, {{4, 0}, {0, 3}}, {{2, 3}, {1, 1}}, {{3, 3}, {4, 3}}, {{4, 0}, {0, 1}}},
+       std::vector<K::Segment_2>{{{1, 2}, {3, 1}}, {{4, 3}, {3, 4}}, {{4, 0}, {3, 3}}, {{3, 0}, {1, 2}},
+                                 {{3, 3}, {2, 1}}, {{4, 0}, {3, 2}}, {{0, 0}, {2, 3}}}}) {
     const Partition p = CGAL::kinetic_partition_2(s);
     CHECK(p.is_valid());
     // the same partition for the segments in another order, or reversed

@@ -242,9 +242,9 @@ kinetic_partition_2(const SegmentRange& segments,
   // such corners that touches the rest of the partition at a single point (an "X" of two
   // segments whose ends are joined by a third one: the triangle hangs at the crossing; two
   // squares sharing a corner) makes a cell whose boundary is not a simple polygon. Then rays
-  // stopped at time 0 at an end of a defective edge are released, each from its corner, and
-  // the propagation is run again: first each alone (the first four candidates, by increasing
-  // index: the segments are in a canonical order), for a ray that leaves the chain into the
+  // stopped at time 0 near a defective edge are released, each from its corner, and the
+  // propagation is run again: first each alone (the first four candidates, nearest first, then
+  // by index: the segments are in a canonical order), for a ray that leaves the chain into the
   // cell around it and splits the cell; then one more at each run, the first candidate of the
   // partition of the previous run. The first valid partition is returned; after 16 runs, the
   // first partition (invalid, as documented).
@@ -257,26 +257,47 @@ kinetic_partition_2(const SegmentRange& segments,
     for(int k = 0; k < 4; ++k) pieces.push_back({EK::Segment_2(box[k], box[(k + 1) % 4]), true});
     return PPS::internal::build_line_partition<K>(pieces, metric_segments, frame, input);
   };
-  // the rays stopped at time 0 at an end of a defective edge of `p`, by increasing index
+  // The rays stopped at time 0 at a point of `p` within 3 edges of a defective edge, by
+  // increasing distance, then index (the chain that hangs at a point of a defective edge may
+  // have its corners farther along).
   const double tolerance = 1e-9 * frame.scale;
   auto candidates = [&](const Partition& p, const std::vector<std::size_t>& defective,
                         const PPS::internal::Kinetic_propagation_2& propagation) {
-    std::vector<std::array<double, 2>> ends;
+    constexpr std::size_t maximum_distance = 3, unreached = std::size_t(-1);
+    std::vector<std::vector<std::size_t>> neighbours(p.number_of_vertices());
+    for(const auto& e : p.edges()) {
+      neighbours[e.source].push_back(e.target);
+      neighbours[e.target].push_back(e.source);
+    }
+    std::vector<std::size_t> distance(p.number_of_vertices(), unreached), layer;
     for(std::size_t e : defective)
-      for(std::size_t v : {p.edges()[e].source, p.edges()[e].target}) {
+      for(std::size_t v : {p.edges()[e].source, p.edges()[e].target})
+        if(distance[v] == unreached) { distance[v] = 0; layer.push_back(v); }
+    std::vector<std::pair<std::array<double, 2>, std::size_t>> near; // point, distance
+    for(std::size_t d = 0; !layer.empty(); ++d) {
+      std::vector<std::size_t> next;
+      for(std::size_t v : layer) {
         const auto q = p.point(v);
-        ends.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y())});
+        near.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y())}, d});
+        if(d < maximum_distance)
+          for(std::size_t w : neighbours[v])
+            if(distance[w] == unreached) { distance[w] = d + 1; next.push_back(w); }
       }
-    std::vector<std::size_t> rays;
+      layer = std::move(next);
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> rays; // distance, ray
     for(std::size_t r = 0; r < propagation.number_of_rays(); ++r) {
       if(!propagation.stopped_at_origin(r)) continue;
       const double x = CGAL::to_double(propagation.origin(r).x()), y = CGAL::to_double(propagation.origin(r).y());
-      if(std::any_of(ends.begin(), ends.end(), [&](const std::array<double, 2>& q) {
-           return std::abs(q[0] - x) <= tolerance && std::abs(q[1] - y) <= tolerance;
-         }))
-        rays.push_back(r);
+      std::size_t closest = unreached;
+      for(const auto& [q, d] : near)
+        if(std::abs(q[0] - x) <= tolerance && std::abs(q[1] - y) <= tolerance) closest = std::min(closest, d);
+      if(closest != unreached) rays.push_back({closest, r});
     }
-    return rays;
+    std::sort(rays.begin(), rays.end());
+    std::vector<std::size_t> result;
+    for(const auto& x : rays) result.push_back(x.second);
+    return result;
   };
   PPS::internal::Kinetic_propagation_2 propagation(distinct_segments, box, maximum_crossings, crossing_distance);
   const Partition partition = run({}, propagation);
