@@ -273,12 +273,12 @@ kinetic_partition_2(const SegmentRange& segments,
     for(std::size_t e : defective)
       for(std::size_t v : {p.edges()[e].source, p.edges()[e].target})
         if(distance[v] == unreached) { distance[v] = 0; layer.push_back(v); }
-    std::vector<std::pair<std::array<double, 2>, std::size_t>> near; // point, distance
+    std::vector<std::pair<std::array<double, 2>, std::size_t>> nearby; // point, distance
     for(std::size_t d = 0; !layer.empty(); ++d) {
       std::vector<std::size_t> next;
       for(std::size_t v : layer) {
         const auto q = p.point(v);
-        near.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y())}, d});
+        nearby.push_back({{CGAL::to_double(q.x()), CGAL::to_double(q.y())}, d});
         if(d < maximum_distance)
           for(std::size_t w : neighbours[v])
             if(distance[w] == unreached) { distance[w] = d + 1; next.push_back(w); }
@@ -290,7 +290,7 @@ kinetic_partition_2(const SegmentRange& segments,
       if(!propagation.stopped_at_origin(r)) continue;
       const double x = CGAL::to_double(propagation.origin(r).x()), y = CGAL::to_double(propagation.origin(r).y());
       std::size_t closest = unreached;
-      for(const auto& [q, d] : near)
+      for(const auto& [q, d] : nearby)
         if(std::abs(q[0] - x) <= tolerance && std::abs(q[1] - y) <= tolerance) closest = std::min(closest, d);
       if(closest != unreached) rays.push_back({closest, r});
     }
