@@ -10,9 +10,9 @@
 // last (the other segment covers I strictly earlier; equal times: the ray with the larger
 // index stops); it crosses instead while it has crossings left, or when its next
 // intersection is closer than the crossing distance. Rays stop at the bounding rectangle.
-// Two ends that meet at time 0 (segments sharing an endpoint, or an end on another segment)
-// both stop: the corners of a footprint stay corners. A ray can be released from this rule
-// (see `release()`): it then goes on from its origin, by the other rules.
+// An end that lies on another segment stops there at time 0 (two segments sharing an endpoint
+// stop each other): the corners of a footprint stay corners. A ray can be released from this
+// rule (see `release()`): it then goes on from its origin, by the other rules.
 //
 // Exactness: intersection points and arrival times are exact (lazy exact kernel); events are
 // processed in exact time order (candidates are found in double precision, and candidates
