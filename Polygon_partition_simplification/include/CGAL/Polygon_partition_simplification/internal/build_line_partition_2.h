@@ -343,8 +343,11 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
   std::vector<typename Partition::Line> kept;
   for(std::size_t l : used_lines) { new_line[l] = kept.size(); kept.push_back(lines[l]); }
   for(auto& e : edges) e.line = new_line[e.line];
+  // (a point can be on a line left without edges: the only edge of that line at the point
+  // collapsed when points that round together merged; the point is then on its other lines)
   for(auto& v : vertices) {
     for(auto& l : v.lines) l = new_line[l];
+    v.lines.erase(std::remove(v.lines.begin(), v.lines.end(), std::size_t(-1)), v.lines.end());
     std::sort(v.lines.begin(), v.lines.end());
   }
   // points by their line sets, edges by (line, points)
