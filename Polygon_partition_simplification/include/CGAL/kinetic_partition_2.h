@@ -12,7 +12,6 @@
 #include <CGAL/Polygon_partition_simplification/internal/snap_collinear_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 
@@ -182,27 +181,8 @@ kinetic_partition_2(const SegmentRange& segments,
   for(const auto& c : input) { endpoints.push_back({c[0], c[1]}); endpoints.push_back({c[2], c[3]}); }
   const PPS::internal::Enclosing_rectangle_2 rectangle = PPS::internal::enclosing_rectangle(endpoints);
   const double half_diagonal = rectangle.half_diagonal();
-  // A line through a corner of the rectangle (a diagonal of a square), or within rounding
-  // errors of it, would meet the rectangle at a point that its corner rounds to, or next to
-  // it: the sides across the axis are moved out a little farther until every corner is at
-  // least 1e-6 half-diagonals from the line of every segment. A corner moves along the sides
-  // of the axis, which no line near it is parallel to (the segments are inside the rectangle).
-  double margin_across = margin * half_diagonal;
-  auto corners = rectangle.corners(margin * half_diagonal, margin_across);
-  auto near_a_line = [&]() {
-    for(const auto& q : corners)
-      for(const auto& c : input) {
-        const double dx = c[2] - c[0], dy = c[3] - c[1];
-        if(std::abs(dx * (q[1] - c[1]) - dy * (q[0] - c[0])) <= 1e-6 * half_diagonal * std::hypot(dx, dy) &&
-           CGAL::orientation(CGAL::Epick::Point_2(c[0], c[1]), CGAL::Epick::Point_2(c[2], c[3]), CGAL::Epick::Point_2(q[0], q[1])) != CGAL::COLLINEAR)
-          return true;
-      }
-    return false;
-  };
-  for(int attempt = 0; attempt < 16 && near_a_line(); ++attempt) {
-    margin_across *= 1.125;
-    corners = rectangle.corners(margin * half_diagonal, margin_across);
-  }
+  // corners away from the lines of the segments (see corners_off_lines())
+  const auto [corners, margin_across] = PPS::internal::corners_off_lines(rectangle, margin * half_diagonal, input);
   std::array<EK::Point_2, 4> box;
   for(int k = 0; k < 4; ++k) box[k] = EK::Point_2(corners[k][0], corners[k][1]);
 

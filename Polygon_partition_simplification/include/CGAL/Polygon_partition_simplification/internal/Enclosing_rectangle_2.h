@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -42,6 +43,37 @@ struct Enclosing_rectangle_2
     return result;
   }
 };
+
+// The corners of `rectangle` with its sides moved out by `margin`, and the margin of the sides
+// across its axis. A segment's line through a corner (a diagonal of a square), or within
+// rounding errors of it, would meet the rectangle at a point that its corner rounds to, or
+// next to it: the sides across the axis are moved out a little farther (up to 16 times 1/8 of
+// their margin) until every corner is at least 1e-6 half-diagonals from the line of every
+// segment that does not pass exactly through it. A corner moves along the sides of the axis,
+// which no line near it is parallel to (the segments are inside the rectangle).
+inline std::pair<std::array<std::array<double, 2>, 4>, double>
+corners_off_lines(const Enclosing_rectangle_2& rectangle, double margin, const std::vector<std::array<double, 4>>& segments)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const double half_diagonal = rectangle.half_diagonal();
+  double margin_across = margin;
+  auto corners = rectangle.corners(margin, margin_across);
+  auto near_a_line = [&]() {
+    for(const auto& q : corners)
+      for(const auto& c : segments) {
+        const double dx = c[2] - c[0], dy = c[3] - c[1];
+        if(std::abs(dx * (q[1] - c[1]) - dy * (q[0] - c[0])) <= 1e-6 * half_diagonal * std::hypot(dx, dy) &&
+           CGAL::orientation(K::Point_2(c[0], c[1]), K::Point_2(c[2], c[3]), K::Point_2(q[0], q[1])) != CGAL::COLLINEAR)
+          return true;
+      }
+    return false;
+  };
+  for(int attempt = 0; attempt < 16 && near_a_line(); ++attempt) {
+    margin_across *= 1.125;
+    corners = rectangle.corners(margin, margin_across);
+  }
+  return {corners, margin_across};
+}
 
 inline Enclosing_rectangle_2 enclosing_rectangle(const std::vector<std::array<double, 2>>& points)
 {
