@@ -107,15 +107,40 @@ static std::vector<std::vector<Point>> read_polylines(const std::string& path)
   return polylines;
 }
 
+// The size in bytes of a binary PLY file's data, from the element counts and property types
+// of its header, when every property is a scalar (with a list property the size depends on
+// the data) and the counts are below 2^48 bytes' worth: 0 otherwise.
+static unsigned long long binary_ply_data_size(const std::vector<std::pair<unsigned long long, std::vector<std::string>>>& elements)
+{
+  unsigned long long total = 0;
+  for(const auto& [count, properties] : elements) {
+    unsigned long long record = 0;
+    for(const std::string& type : properties) {
+      unsigned long long size = 0;
+      if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") size = 1;
+      else if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") size = 2;
+      else if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32") size = 4;
+      else if(type == "double" || type == "float64") size = 8;
+      else return 0; // a list, or a type this check does not know
+      record += size;
+    }
+    // a count too large for the file is left to CGAL's reader (which then fails), not wrapped around
+    if(record != 0 && count > (1ull << 48) / record) return 0;
+    total += count * record;
+  }
+  return total;
+}
+
 // CGAL's readers stop after the number of points that an OFF or PLY header declares: a header
 // that declares fewer than the file holds would drop points silently. For ASCII files (one
 // record per line) whose points come last (an OFF file without faces, a PLY file whose last
-// element is the vertices) the data lines are counted against the header. Binary PLY files,
-// and files with faces after the points (where an extra line may be an extra face), are not
-// checked.
+// element is the vertices) the data lines are counted against the header; for binary PLY
+// files whose properties are all scalars, the size of the data is compared with the size the
+// header gives. Binary PLY files with list properties (faces), binary OFF files, and ASCII files
+// with faces after the points (where an extra line may be an extra face) are not checked.
 static void check_declared_counts(const std::string& input, const std::string& ext)
 {
-  std::ifstream in(input);
+  std::ifstream in(input, std::ios::binary);
   std::string line;
   auto next_line = [&](bool skip_comments) {
     while(std::getline(in, line)) {
@@ -148,21 +173,43 @@ static void check_declared_counts(const std::string& input, const std::string& e
     what = std::to_string(v) + " points";
   } else if(ext == ".ply") {
     if(!next_line(false) || line.rfind("ply", 0) != 0) return;
-    while(next_line(false) && line.rfind("end_header", 0) != 0) {
+    bool binary = false, ended = false;
+    std::vector<std::pair<unsigned long long, std::vector<std::string>>> elements; // count, property types
+    while(next_line(false)) {
+      if(line.rfind("end_header", 0) == 0) { ended = true; break; }
       std::istringstream words(line);
       std::string keyword, name;
       words >> keyword;
       if(keyword == "format") {
         std::string format;
         words >> format;
-        if(format != "ascii") return;
+        if(format == "binary_little_endian" || format == "binary_big_endian") binary = true;
+        else if(format != "ascii") return;
       } else if(keyword == "element") {
         unsigned long long count = 0;
         if(!(words >> name >> count)) return;
         declared += count;
         what += (what.empty() ? "" : ", ") + std::to_string(count) + " " + name;
         last_element = name;
+        elements.push_back({count, {}});
+      } else if(keyword == "property") {
+        std::string type;
+        if(!(words >> type) || elements.empty()) return;
+        elements.back().second.push_back(type);
       }
+    }
+    if(binary) {
+      if(!ended) return;
+      const auto data_start = in.tellg(); // after the line "end_header" and its end of line
+      const unsigned long long expected = binary_ply_data_size(elements);
+      if(data_start < 0 || expected == 0) return;
+      const unsigned long long size = std::filesystem::file_size(input);
+      if(size > (unsigned long long)(data_start) + expected)
+        throw std::invalid_argument("input '" + input + "' holds more data than its header declares (" + what + ", " +
+                                    std::to_string(expected) + " bytes, against " +
+                                    std::to_string(size - (unsigned long long)(data_start)) +
+                                    "): the points beyond would be ignored; fix the header");
+      return;
     }
     if(last_element != "vertex") return;
   } else

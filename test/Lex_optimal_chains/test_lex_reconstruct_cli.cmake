@@ -99,6 +99,30 @@ foreach(ext off ply)
   endif()
 endforeach()
 
+# spheres.ply (binary, 5,969 points of 48 bytes) with a header that declares 5,900 of them:
+# the size of the data tells that the file holds more than declared. The header is rewritten
+# with the shell's coreutils (CMake cannot write binary files). The file as it is passes.
+execute_process(COMMAND sh -c "n=$(head -n 4 \"$1\" | wc -c) && { head -n 3 \"$1\"; echo 'element vertex 5900'; tail -c +$((n + 1)) \"$1\"; } > \"$2\""
+                        sh "${DATA}/points_3/spheres.ply" "${WORK}/spheres_5900.ply" RESULT_VARIABLE rc)
+file(READ "${WORK}/spheres_5900.ply" spheres_header LIMIT 120)
+if(NOT rc EQUAL 0 OR NOT spheres_header MATCHES "element vertex 5900\nproperty double x")
+  message(FATAL_ERROR "could not write spheres.ply with a short header (exit code ${rc})")
+endif()
+expect_failure(short_header_binary_ply closed "${WORK}/spheres_5900.ply")
+execute_process(COMMAND "${PROGRAM}" closed "${WORK}/spheres_5900.ply" "${WORK}/short.off" ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT err MATCHES "holds more data than its header declares")
+  message(FATAL_ERROR "short_header_binary_ply: not the reason expected: '${err}'")
+endif()
+execute_process(COMMAND "${PROGRAM}" closed "${DATA}/points_3/spheres.ply" "${WORK}/spheres.off" --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "spheres.ply: exit code ${rc}: ${err}")
+endif()
+string(JSON points GET "${json}" points)
+if(NOT points EQUAL 5969)
+  message(FATAL_ERROR "spheres.ply: ${points} points read, 5969 expected")
+endif()
+
 # oni.ply: its most persistent void (2.6) is below the default threshold (4); with a lower
 # --min-persistence it is taken as the interior: one closed surface through most of the points
 expect_failure(oni_default closed "${DATA}/points_3/oni.ply")
