@@ -88,7 +88,7 @@ auto propagate_releasing_hanging_corners(const MakePropagation& make_propagation
     return partition_of(propagation);
   };
   Kinetic_propagation_2 propagation = make_propagation();
-  const auto partition = run({}, propagation);
+  auto partition = run({}, propagation); // not const: moved out when returned
   const std::vector<std::size_t> defective = partition.defective_edges();
   if(defective.empty()) return partition;
   constexpr std::size_t maximum_runs = 16, maximum_single_runs = 5;
