@@ -22,6 +22,29 @@ function(expect_failure name subcommand input)
     message(FATAL_ERROR "${name}: the reason is not one line: '${err}'")
   endif()
   message(STATUS "${name}: ${err}")
+  set(last_error "${err}" PARENT_SCOPE)
+endfunction()
+
+# expect_failure_because(name reason subcommand input [options...]): as expect_failure, with a
+# reason that matches the regular expression `reason`
+function(expect_failure_because name reason subcommand input)
+  expect_failure(${name} ${subcommand} "${input}" ${ARGN})
+  if(NOT last_error MATCHES "${reason}")
+    message(FATAL_ERROR "${name}: not the reason expected: '${last_error}'")
+  endif()
+endfunction()
+
+# expect_points(name input count): the closed surface of `input` is made from `count` points
+function(expect_points name input count)
+  execute_process(COMMAND "${PROGRAM}" closed "${input}" "${WORK}/${name}.off" --json
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${name}: exit code ${rc}: ${err}")
+  endif()
+  string(JSON points GET "${json}" points)
+  if(NOT points EQUAL count)
+    message(FATAL_ERROR "${name}: ${points} points read, ${count} expected")
+  endif()
 endfunction()
 
 file(WRITE "${WORK}/empty.xyz" "")
@@ -83,20 +106,9 @@ foreach(n 5000 ${kitten_count})
   file(WRITE "${WORK}/kitten_${n}.ply" "${header}${kitten_points}")
 endforeach()
 foreach(ext off ply)
-  expect_failure(short_header_${ext} closed "${WORK}/kitten_5000.${ext}")
-  execute_process(COMMAND "${PROGRAM}" closed "${WORK}/kitten_5000.${ext}" "${WORK}/short.off" ERROR_VARIABLE err OUTPUT_QUIET)
-  if(NOT err MATCHES "holds more records than its header declares")
-    message(FATAL_ERROR "short_header_${ext}: not the reason expected: '${err}'")
-  endif()
-  execute_process(COMMAND "${PROGRAM}" closed "${WORK}/kitten_${kitten_count}.${ext}" "${WORK}/full_${ext}.off" --json
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "kitten as ${ext} with the right header: exit code ${rc}: ${err}")
-  endif()
-  string(JSON points GET "${json}" points)
-  if(NOT points EQUAL kitten_count)
-    message(FATAL_ERROR "kitten as ${ext}: ${points} points read, ${kitten_count} expected")
-  endif()
+  expect_failure_because(short_header_${ext} "holds more records than its header declares" closed
+                         "${WORK}/kitten_5000.${ext}")
+  expect_points(full_header_${ext} "${WORK}/kitten_${kitten_count}.${ext}" ${kitten_count})
 endforeach()
 
 # spheres.ply (binary, 5,969 points of 48 bytes) with a header that declares 5,900 of them:
@@ -108,20 +120,9 @@ file(READ "${WORK}/spheres_5900.ply" spheres_header LIMIT 120)
 if(NOT rc EQUAL 0 OR NOT spheres_header MATCHES "element vertex 5900\nproperty double x")
   message(FATAL_ERROR "could not write spheres.ply with a short header (exit code ${rc})")
 endif()
-expect_failure(short_header_binary_ply closed "${WORK}/spheres_5900.ply")
-execute_process(COMMAND "${PROGRAM}" closed "${WORK}/spheres_5900.ply" "${WORK}/short.off" ERROR_VARIABLE err OUTPUT_QUIET)
-if(NOT err MATCHES "holds more data than its header declares")
-  message(FATAL_ERROR "short_header_binary_ply: not the reason expected: '${err}'")
-endif()
-execute_process(COMMAND "${PROGRAM}" closed "${DATA}/points_3/spheres.ply" "${WORK}/spheres.off" --json
-                RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "spheres.ply: exit code ${rc}: ${err}")
-endif()
-string(JSON points GET "${json}" points)
-if(NOT points EQUAL 5969)
-  message(FATAL_ERROR "spheres.ply: ${points} points read, 5969 expected")
-endif()
+expect_failure_because(short_header_binary_ply "holds more data than its header declares" closed
+                       "${WORK}/spheres_5900.ply")
+expect_points(spheres "${DATA}/points_3/spheres.ply" 5969)
 
 # oni.ply: its most persistent void (2.6) is below the default threshold (4); with a lower
 # --min-persistence it is taken as the interior: one closed surface through most of the points
