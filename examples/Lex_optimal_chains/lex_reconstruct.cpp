@@ -1,12 +1,14 @@
 // lex_reconstruct: surface reconstruction from a point cloud as a lexicographic optimal chain.
 //
 //   lex_reconstruct closed INPUT OUTPUT [--interior X,Y,Z]... [--exterior X,Y,Z]...
-//                   [--min-persistence V] [--threads N] [--json]
+//                   [--min-persistence V] [--keep-non-manifold] [--threads N] [--ascii] [--json]
 //   lex_reconstruct open INPUT OUTPUT (--boundary FILE | --auto-boundary)
 //                   [--coefficients z2|q] [--remove-blocking-points]
-//                   [--drop-boundary-triangles | --keep-boundary-triangles] [--threads N] [--json]
+//                   [--drop-boundary-triangles | --keep-boundary-triangles] [--keep-non-manifold]
+//                   [--threads N] [--ascii] [--json]
 //
-// INPUT: points as XYZ, PLY or OFF. OUTPUT: a mesh as OFF, PLY or OBJ, by extension.
+// INPUT: points as XYZ, PLY or OFF. OUTPUT: a mesh as OFF, PLY (binary unless --ascii) or
+// OBJ, by extension.
 // Boundary FILE: CGAL's polylines text format, one closed polyline per line:
 // "n x1 y1 z1 ... xn yn zn" with the last point equal to the first.
 // On error: a one-line reason on stderr, exit code 1, and no output file.
@@ -301,15 +303,32 @@ public:
       throw std::runtime_error("cannot write '" + output + "' (no such directory, or no permission)");
   }
   ~Output_file() { std::error_code ignored; std::filesystem::remove(tmp_, ignored); }
-  void write(const Mesh& mesh)
+  void write(const Mesh& mesh, bool ascii)
   {
-    if(!CGAL::IO::write_polygon_mesh(tmp_, mesh, CGAL::parameters::stream_precision(17)))
+    if(!CGAL::IO::write_polygon_mesh(tmp_, mesh, CGAL::parameters::stream_precision(17).use_binary_mode(!ascii)))
       throw std::runtime_error("cannot write '" + output_ + "'");
     std::filesystem::rename(tmp_, output_);
   }
 private:
   std::string output_, tmp_;
 };
+
+// the options common to both subcommands
+struct Output_options
+{
+  unsigned threads = 1;
+  bool keep_non_manifold = false, ascii = false, json = false;
+};
+
+static void add_output_options(CLI::App* command, Output_options& options)
+{
+  command->add_flag("--keep-non-manifold", options.keep_non_manifold,
+                    "keep the optimal chain as it is: its non-manifold vertices and edges are split in the mesh "
+                    "instead of resolved by local changes of the chain");
+  command->add_option("--threads", options.threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
+  command->add_flag("--ascii", options.ascii, "write a .ply mesh as text (binary by default)");
+  command->add_flag("--json", options.json, "print one JSON line of statistics on stdout");
+}
 
 static void add_mesh_statistics(nlohmann::json& j, const Mesh& mesh)
 {
@@ -333,17 +352,22 @@ static void add_common_statistics(nlohmann::json& j, const std::string& input, c
   j["points"] = r.number_of_input_points;
   j["delaunay_s"] = r.delaunay_seconds;
   j["order_s"] = r.order_seconds;
+  j["resolution_s"] = r.resolution_seconds;
+  j["mesh_s"] = r.output_seconds;
+  j["write_s"] = io_seconds;
   j["output_s"] = r.output_seconds + io_seconds;
   j["total_s"] = r.total_seconds + io_seconds;
   j["peak_rss_mb"] = peak_rss_mb();
   add_mesh_statistics(j, mesh);
   j["non_manifold_vertices"] = r.non_manifold_vertices;
   j["non_manifold_edges"] = r.non_manifold_edges;
+  j["resolved_non_manifold_vertices"] = r.resolved_non_manifold_vertices;
+  j["resolution_changed_triangles"] = r.resolution_changed_facets;
 }
 
 static int run_closed(const std::string& input, const std::string& output, const std::vector<std::string>& interior_text,
-                      const std::vector<std::string>& exterior_text, double min_persistence, unsigned threads,
-                      bool json)
+                      const std::vector<std::string>& exterior_text, double min_persistence,
+                      const Output_options& options)
 {
   Output_file file(output);
   std::vector<Point> interior, exterior;
@@ -357,13 +381,14 @@ static int run_closed(const std::string& input, const std::string& output, const
     LOC::parameters::interior_points(interior,
     LOC::parameters::exterior_points(exterior,
     LOC::parameters::minimum_interior_persistence(min_persistence,
-    LOC::parameters::number_of_threads(threads,
-    LOC::parameters::callback(bar.callback()))))));
+    LOC::parameters::keep_non_manifold(options.keep_non_manifold,
+    LOC::parameters::number_of_threads(options.threads,
+    LOC::parameters::callback(bar.callback())))))));
   CGAL::Real_timer io;
   io.start();
-  file.write(mesh);
+  file.write(mesh, options.ascii);
   io.stop();
-  if(json) {
+  if(options.json) {
     nlohmann::json j;
     add_common_statistics(j, input, output, r, io.time(), mesh);
     j["cut_s"] = r.cut_seconds;
@@ -382,7 +407,7 @@ static int run_closed(const std::string& input, const std::string& output, const
 
 static int run_open(const std::string& input, const std::string& output, const std::string& boundary_file,
                     bool auto_boundary, const std::string& coefficients, bool remove_blocking, bool drop, bool keep,
-                    unsigned threads, bool json)
+                    const Output_options& options)
 {
   Output_file file(output);
   if(coefficients != "z2" && coefficients != "q")
@@ -400,18 +425,19 @@ static int run_open(const std::string& input, const std::string& output, const s
     LOC::parameters::coefficient_field(coefficients == "z2" ? LOC::Coefficient_field::Z2 : LOC::Coefficient_field::Q,
     LOC::parameters::remove_blocking_points(remove_blocking,
     LOC::parameters::drop_boundary_triangles(drop_skirt,
-    LOC::parameters::number_of_threads(threads,
-    LOC::parameters::callback(bar.callback()))))));
+    LOC::parameters::keep_non_manifold(options.keep_non_manifold,
+    LOC::parameters::number_of_threads(options.threads,
+    LOC::parameters::callback(bar.callback())))))));
   CGAL::Real_timer io;
   io.start();
-  file.write(mesh);
+  file.write(mesh, options.ascii);
   io.stop();
   if(r.number_of_multiple_facets > 0)
     std::cerr << "\nwarning: " << r.number_of_multiple_facets
               << " triangles have a coefficient other than 1 or -1: over Q the boundary winds more than once "
                  "around them (loops bounding an annulus must turn in opposite directions); --coefficients z2 "
                  "ignores the orientations\n";
-  if(json) {
+  if(options.json) {
     nlohmann::json j;
     add_common_statistics(j, input, output, r, io.time(), mesh);
     j["coefficients"] = coefficients;
@@ -438,9 +464,9 @@ int main(int argc, char** argv)
   app.require_subcommand(1);
   std::string input, output, boundary_file, coefficients = "q";
   std::vector<std::string> interior_text, exterior_text;
-  unsigned threads = 1;
+  Output_options options;
   double min_persistence = 4;
-  bool json = false, auto_boundary = false, remove_blocking = false, drop = false, keep = false;
+  bool auto_boundary = false, remove_blocking = false, drop = false, keep = false;
 
   CLI::App* closed = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
   closed->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
@@ -456,8 +482,7 @@ int main(int argc, char** argv)
         return std::isfinite(v) && v > 0 ? std::string() : "must be a positive finite number, not " + text;
       },
       "POSITIVE"));
-  closed->add_option("--threads", threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
-  closed->add_flag("--json", json, "print one JSON line of statistics on stdout");
+  add_output_options(closed, options);
 
   CLI::App* open = app.add_subcommand("open", "open surface bounded by closed polylines");
   open->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
@@ -472,8 +497,7 @@ int main(int argc, char** argv)
   auto* d = open->add_flag("--drop-boundary-triangles", drop, "drop the triangles touching boundary vertices that are not input points");
   auto* k = open->add_flag("--keep-boundary-triangles", keep, "keep them with --auto-boundary");
   d->excludes(k);
-  open->add_option("--threads", threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
-  open->add_flag("--json", json, "print one JSON line of statistics on stdout");
+  add_output_options(open, options);
   try {
     app.parse(argc, argv);
     if(open->parsed() && boundary_file.empty() && !auto_boundary)
@@ -487,8 +511,8 @@ int main(int argc, char** argv)
     return 1;
   }
   try {
-    if(closed->parsed()) return run_closed(input, output, interior_text, exterior_text, min_persistence, threads, json);
-    return run_open(input, output, boundary_file, auto_boundary, coefficients, remove_blocking, drop, keep, threads, json);
+    if(closed->parsed()) return run_closed(input, output, interior_text, exterior_text, min_persistence, options);
+    return run_open(input, output, boundary_file, auto_boundary, coefficients, remove_blocking, drop, keep, options);
   } catch(const std::exception& e) {
     std::cerr << "lex_reconstruct: error: " << e.what() << std::endl;
     return 1;

@@ -11,6 +11,7 @@
 #include <CGAL/Lex_optimal_chains/parameters.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_cut_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_mesh_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Closed_surface_repair_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
@@ -48,19 +49,22 @@ struct Closed_surface_report
   std::size_t number_of_triangles = 0;         ///< finite facets of the triangulation (dual edges)
   std::size_t number_of_triangles_in_close_runs = 0;  ///< triangles whose fast keys were too close to be ordered by them (among the triangles sorted: those left between components by the contraction along the largest triangles of the cells)
   std::size_t number_of_exactly_ordered_triangles = 0; ///< triangles ordered by the exact comparator in that sort, plus the comparisons of the contraction made exactly
-  std::size_t number_of_facets = 0;            ///< facets of the optimal 2-cycle
+  std::size_t number_of_facets = 0;            ///< facets of the output 2-cycle (the optimal one after the resolution of its non-manifold vertices)
+  std::size_t resolved_non_manifold_vertices = 0; ///< local changes of the cycle that made a non-manifold vertex manifold
+  std::size_t resolution_changed_facets = 0;   ///< facets in the symmetric difference of the optimal cycle and the output cycle
   bool automatic_interior = false;             ///< true if the interior cell was chosen automatically
   double interior_persistence = 0;             ///< persistence ratio of the automatic interior
   double delaunay_seconds = 0;                 ///< time to build the Delaunay triangulation
   double order_seconds = 0;                    ///< time to order the triangles (largest triangle of each cell, contraction, sort of the others)
   double cut_seconds = 0;                      ///< time of the automatic interior and of Algorithm 8
+  double resolution_seconds = 0;               ///< time to find and resolve the non-manifold vertices of the cycle
   double output_seconds = 0;                   ///< time to build the mesh
   double total_seconds = 0;                    ///< time of the whole call
   std::size_t mesh_vertices = 0;               ///< vertices of the output mesh (reconstruction only)
   std::size_t mesh_faces = 0;                  ///< faces of the output mesh (reconstruction only)
   std::size_t components = 0;                  ///< connected components of the output mesh
-  std::size_t non_manifold_vertices = 0;       ///< triangulation vertices split in several mesh vertices
-  std::size_t non_manifold_edges = 0;          ///< triangulation edges split in several mesh edges
+  std::size_t non_manifold_vertices = 0;       ///< triangulation vertices split in several mesh vertices (none unless `keep_non_manifold`, or a resolution failed)
+  std::size_t non_manifold_edges = 0;          ///< triangulation edges split in several mesh edges (likewise)
   long genus = 0;                              ///< sum of the genera of the components
 };
 
@@ -110,13 +114,13 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
 // position p in the numbering `cells` (`Closed_surface_mesh_3::facet_key()`) that owns its
 // record, which may be the inside or the outside one (naming every facet by its inside cell
 // read the other cell at random: about half of the cut at 1M points, 0.09 s); fills `cells`
-// and `inside`, indexed by it.
+// and `inside`, indexed by it, and `constraints` with the positions of the constraint cells.
 template <class Triangulation, class NamedParameters>
 std::vector<std::uint32_t>
 closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
                       const std::function<bool(double)>& callback, double progress_from,
                       Closed_surface_report& report, std::vector<bool>& inside,
-                      Handle_index_map<typename Triangulation::Cell>& cells)
+                      Handle_index_map<typename Triangulation::Cell>& cells, Constraint_cells& constraints)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -194,6 +198,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     // the Kruskal pass of the persistence also gave the spanning tree: Algorithm 8 needs no
     // second pass over the triangles
     cut = lexicographic_closed_cut_from_tree(contracted, components, spanning_tree, a.cell, sinks, inside, cut_progress);
+    sources.push_back(a.cell);
   } else {
     cut = lexicographic_closed_cut(contracted, inside, cut_progress);
   }
@@ -201,11 +206,44 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   std::vector<std::uint32_t> facets(cut.size());
   for(std::size_t i = 0; i < cut.size(); ++i)
     facets[i] = Closed_surface_mesh_3<Triangulation>::facet_key(Graph::owner_position(cut[i]), Graph::facet_index(cut[i]));
-  report.number_of_facets = facets.size();
   report.cut_seconds = watch.lap();
   if(verbose)
     std::cerr << "Lex_optimal_chains: cut " << facets.size() << " facets in " << report.cut_seconds << " s\n";
+  constraints.sources = std::move(sources); // sorted
+  constraints.sinks = std::move(sinks);
+  report.number_of_facets = facets.size();
   return facets;
+}
+
+// Resolves the non-manifold vertices of the cycle `facets` (unless `keep_non_manifold`) and
+// returns its surface; fills the resolution fields of the report, and `surface_seconds` with
+// the time taken to make the surface of the optimal cycle.
+template <class Triangulation, class NamedParameters>
+std::unique_ptr<Closed_surface_mesh_3<Triangulation>>
+resolved_closed_surface(const Triangulation& dt, const NamedParameters& np,
+                        const Handle_index_map<typename Triangulation::Cell>& cells, std::vector<bool>& inside,
+                        const Constraint_cells& constraints, std::vector<std::uint32_t>& facets,
+                        Closed_surface_report& report, double& surface_seconds)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Stopwatch watch;
+  const bool keep = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::keep_non_manifold), false);
+  const Handle_index_map<typename Triangulation::Vertex> vertices(dt.tds().vertices().begin(), dt.tds().vertices().end());
+  Closed_surface_repair_result r;
+  std::unique_ptr<Closed_surface_mesh_3<Triangulation>> surface =
+    manifold_closed_surface(dt, cells, vertices, inside, constraints, keep, facets, r);
+  report.resolved_non_manifold_vertices = r.statistics.repaired_vertices;
+  report.resolution_changed_facets = r.removed_facets + r.added_facets;
+  report.number_of_facets = facets.size();
+  report.resolution_seconds = watch.lap() - r.surface_seconds;
+  surface_seconds = r.surface_seconds;
+  if(choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false))
+    std::cerr << "Lex_optimal_chains: surface of " << facets.size() << " facets made, "
+              << r.statistics.repaired_vertices << " non-manifold vertices resolved (" << r.statistics.changed_cells
+              << " cells moved, " << r.removed_facets << " facets removed, " << r.added_facets << " added, "
+              << r.statistics.rounds << " rounds, " << r.moved_pockets << " regions cut off moved back) in " << report.resolution_seconds << " s\n";
+  return surface;
 }
 
 } // namespace internal
@@ -218,10 +256,16 @@ Computes the lexicographic optimal 2-cycle of the Delaunay triangulation `dt` co
 \f$S^3\f$ by its infinite vertex that separates the interior constraint from the exterior
 one (Algorithm 8 of the thesis on the dual graph, triangles ordered by Lemma 4.14).
 
-The result is the boundary of a union of finite tetrahedra (the *inside* cells). Each of its
-facets is written to `facets` as a `DT::Facet` `(c, i)` where `c` is the inside cell, in
-decreasing triangle order; the triangle `c->vertex((i+1)&3), c->vertex((i+2)&3),
-c->vertex((i+3)&3)`, with its last two vertices swapped when `i` is odd, is oriented outward.
+The result is the boundary of a union of finite tetrahedra (the *inside* cells). Unless
+`keep_non_manifold` is set, its non-manifold vertices are then resolved: around each, cells
+move between the inside and the outside (never the constraint cells), the change chosen
+among a few local candidates as the one giving the lexicographically smallest cycle (see the
+user manual, section "Manifold output"); the result is a 2-manifold wherever such a change
+exists. Each facet is written to `facets` as a `DT::Facet` `(c, i)` where `c` is the inside
+cell: the facets of the optimal cycle that are kept, in decreasing triangle order, then the
+facets added by the resolution, in decreasing triangle order. The triangle
+`c->vertex((i+1)&3), c->vertex((i+2)&3), c->vertex((i+3)&3)`, with its last two vertices
+swapped when `i` is odd, is oriented outward.
 
 \tparam DT a `Delaunay_triangulation_3` whose points have `double` coordinates
 \param dt the triangulation; it is not modified
@@ -237,6 +281,12 @@ c->vertex((i+3)&3)`, with its last two vertices swapped when `i` is odd, is orie
     \cgalParamDescription{points outside the surface, added to the exterior constraint}
     \cgalParamType{a range of `DT::Point`}
     \cgalParamDefault{empty: the exterior is the infinite vertex only}
+  \cgalParamNEnd
+  \cgalParamNBegin{keep_non_manifold}
+    \cgalParamDescription{if `true`, the optimal cycle is returned as it is; otherwise its non-manifold
+                          vertices are resolved by local changes (see the user manual)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_interior_persistence}
     \cgalParamDescription{the automatic interior is refused below this persistence ratio}
@@ -275,8 +325,11 @@ lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
   Lex_optimal_chains::internal::Stopwatch total;
   std::vector<bool> inside;
   Lex_optimal_chains::internal::Handle_index_map<typename DT::Cell> cells;
-  const std::vector<std::uint32_t> result =
-    Lex_optimal_chains::internal::closed_surface_facets(dt, np, callback, 0.0, report, inside, cells);
+  Lex_optimal_chains::internal::Constraint_cells constraints;
+  std::vector<std::uint32_t> result =
+    Lex_optimal_chains::internal::closed_surface_facets(dt, np, callback, 0.0, report, inside, cells, constraints);
+  double surface_seconds = 0;
+  Lex_optimal_chains::internal::resolved_closed_surface(dt, np, cells, inside, constraints, result, report, surface_seconds);
   Lex_optimal_chains::internal::report_progress(callback, 1.0); // before anything is written
   for(const std::uint32_t key : result) {
     const auto cell = dt.tds().cells().iterator_to(*const_cast<typename DT::Cell*>(cells.element(key >> 2)));
@@ -303,15 +356,15 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
   report.delaunay_seconds = watch.lap();
   std::vector<bool> inside;
   std::unique_ptr<Closed_surface_mesh_3<Triangulation>> surface;
+  double extraction_seconds = 0; // the surface of the optimal cycle (its resolution is timed apart)
   {
     Handle_index_map<typename Triangulation::Cell> cells; // as used by `inside`
-    std::vector<std::uint32_t> facets = closed_surface_facets(dt, np, callback, 0.35, report, inside, cells);
+    Constraint_cells constraints;
+    std::vector<std::uint32_t> facets = closed_surface_facets(dt, np, callback, 0.35, report, inside, cells, constraints);
     watch.lap();
-    const Handle_index_map<typename Triangulation::Vertex> vertex_positions(dt.tds().vertices().begin(),
-                                                                            dt.tds().vertices().end());
-    surface.reset(new Closed_surface_mesh_3<Triangulation>(std::move(facets), cells, vertex_positions, inside));
+    surface = resolved_closed_surface(dt, np, cells, inside, constraints, facets, report, extraction_seconds);
+    watch.lap();
   }
-  const double extraction_seconds = watch.lap();
   report_progress(callback, 0.9);
   // the triangulation (ours) is freed before the rest of the surface is made: peak memory
   std::vector<bool>().swap(inside);

@@ -50,17 +50,20 @@ struct Open_surface_report
   std::size_t number_of_representative_triangles = 0; ///< triangles of the representative chain
   std::size_t number_of_facets = 0;              ///< triangles of the optimal chain
   std::size_t number_of_multiple_facets = 0;     ///< of those, triangles whose coefficient is not 1 or -1 (Q only)
+  std::size_t resolved_non_manifold_vertices = 0; ///< local changes of the chain that made a non-manifold vertex manifold (reconstruction only)
+  std::size_t resolution_changed_facets = 0;     ///< triangles in the symmetric difference of the optimal chain and the output chain (reconstruction only)
   double delaunay_seconds = 0;                   ///< time to build the Delaunay triangulation
   double representative_seconds = 0;             ///< time of Algorithm 11
   double order_seconds = 0;                      ///< time to contract the dual graph and sort the triangles left
   double optimal_chain_seconds = 0;              ///< time of Algorithm 10
+  double resolution_seconds = 0;                 ///< time to find and resolve the non-manifold vertices (reconstruction only)
   double output_seconds = 0;                     ///< time to write the chain (and to build the mesh, for a reconstruction)
   double total_seconds = 0;                      ///< time of the whole call
   std::size_t mesh_vertices = 0;                 ///< vertices of the output mesh (reconstruction only)
   std::size_t mesh_faces = 0;                    ///< faces of the output mesh (reconstruction only)
   std::size_t dropped_triangles = 0;             ///< triangles dropped because they touch a boundary-only vertex
-  std::size_t non_manifold_vertices = 0;         ///< vertex copies added to separate umbrellas (reconstruction only)
-  std::size_t non_manifold_edges = 0;            ///< edges of more than two triangles of the chain, split in the mesh (reconstruction only)
+  std::size_t non_manifold_vertices = 0;         ///< vertex copies added to separate umbrellas: the non-manifold vertices left by the resolution, or all with `keep_non_manifold` (reconstruction only)
+  std::size_t non_manifold_edges = 0;            ///< edges of more than two triangles of the output chain, split in the mesh (reconstruction only)
   std::size_t orientation_cuts = 0;              ///< edges cut to orient the mesh: over Z2, where the chain is not orientable (reconstruction only)
 };
 

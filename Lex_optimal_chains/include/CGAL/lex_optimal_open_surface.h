@@ -11,10 +11,10 @@
 #include <CGAL/Lex_optimal_chains/Coefficient_field.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Chain_soup_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
-#include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
-#include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
+#include <CGAL/Lex_optimal_chains/internal/Open_surface_repair_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 
 #include <CGAL/Bbox_3.h>
@@ -229,116 +229,6 @@ insert_boundary(Triangulation& dt, const std::vector<std::vector<Point>>& polyli
   }
 }
 
-// The soup of a chain, its vertices sorted by coordinates and its triangles sorted, so that
-// the output does not depend on the input order or on memory addresses. The facets of the
-// chain are given one by one (`add()`, as an output iterator receives them), so that the
-// chain itself is never stored: this runs at the peak of memory.
-template <class Triangulation>
-class Chain_soup_builder
-{
-public:
-  using Vertex = typename Triangulation::Vertex;
-  using Facet = typename Triangulation::Facet;
-  using Point = typename Triangulation::Point;
-
-  // `expected_size`, if not null, is read at the first `add()`: the number of facets to come.
-  Chain_soup_builder(const typename Triangulation::Triangulation_data_structure& tds, bool oriented,
-                     const std::set<typename Triangulation::Vertex_handle>& drop, const std::size_t* expected_size)
-    : dense_(tds.vertices().begin(), tds.vertices().end()), oriented_(oriented), expected_size_(expected_size)
-  {
-    for(const auto& h : drop) dropped_vertices_.push_back(dense_.index(&*h));
-    std::sort(dropped_vertices_.begin(), dropped_vertices_.end());
-  }
-
-  // the facet (c, i) with coefficient k > 0: the triangle outward of c
-  void add(const Facet& f, std::int64_t)
-  {
-    if(!reserved_ && expected_size_ != nullptr) triangles_.reserve(*expected_size_);
-    reserved_ = true;
-    const auto& c = f.first;
-    const int i = f.second;
-    std::array<std::uint32_t, 3> t{{dense_.index(&*c->vertex((i + 1) & 3)), dense_.index(&*c->vertex((i + 2) & 3)),
-                                    dense_.index(&*c->vertex((i + 3) & 3))}};
-    if(i & 1) std::swap(t[1], t[2]);
-    if(!dropped_vertices_.empty() && (is_dropped(t[0]) || is_dropped(t[1]) || is_dropped(t[2]))) {
-      ++dropped_;
-      return;
-    }
-    triangles_.push_back(t); // by dense vertex numbers, renumbered by `finish()`
-  }
-
-  // Copies the points of the vertices that the triangles use, after the last `add()`: the
-  // triangulation can then be freed before `finish()`, whose sorts and copies of the soup
-  // would otherwise add to it (at 5M points they made the peak of memory).
-  void take_points()
-  {
-    constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();
-    number_.assign(dense_.size(), unused);
-    std::size_t count = 0; // counted first: a growing vector would hold two copies at once
-    for(const auto& t : triangles_)
-      for(const std::uint32_t v : t)
-        if(number_[v] == unused) { number_[v] = 0; ++count; }
-    used_.reserve(count);
-    for(const auto& t : triangles_)
-      for(const std::uint32_t v : t)
-        if(number_[v] == 0) { // its first use
-          number_[v] = 1;
-          used_.push_back({dense_.element(v)->point(), v});
-        }
-  }
-
-  // The points of the used vertices (sorted) and the triangles on them (sorted); the number
-  // of triangles dropped because they touch a dropped vertex. After `take_points()`; does not
-  // read the triangulation.
-  void finish(std::vector<Point>& points, std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t& dropped)
-  {
-    // the used vertices, numbered in the order of their points (copied next to their vertex
-    // numbers, so that the sort reads contiguous memory)
-    std::sort(used_.begin(), used_.end(), [](const Used_vertex& a, const Used_vertex& b) { return a.point < b.point; });
-    points.clear();
-    points.reserve(used_.size());
-    for(std::uint32_t k = 0; k < used_.size(); ++k) {
-      number_[used_[k].vertex] = k;
-      points.push_back(used_[k].point);
-    }
-    std::vector<Used_vertex>().swap(used_);
-    for(auto& t : triangles_) {
-      for(std::uint32_t& v : t) v = number_[v];
-      if(oriented_) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // keeps the orientation
-      else std::sort(t.begin(), t.end());
-    }
-    std::vector<std::uint32_t>().swap(number_);
-    // sorted lexicographically: distributed by first vertex (a counting sort), then each
-    // vertex's few triangles sorted by the other two
-    triangles.assign(triangles_.size(), std::array<std::uint32_t, 3>{});
-    const std::vector<std::uint32_t> first = counting_sort_by_key(
-      points.size(), std::uint32_t(triangles_.size()), [this](std::uint32_t i) { return triangles_[i][0]; },
-      [&](std::uint32_t i, std::uint32_t at) { triangles[at] = triangles_[i]; });
-    std::vector<std::array<std::uint32_t, 3>>().swap(triangles_);
-    for(std::size_t v = 0; v < points.size(); ++v)
-      if(first[v + 1] - first[v] > 1) std::sort(triangles.begin() + first[v], triangles.begin() + first[v + 1]);
-    dropped = dropped_;
-  }
-
-private:
-  bool is_dropped(std::uint32_t v) const { return std::binary_search(dropped_vertices_.begin(), dropped_vertices_.end(), v); }
-
-  Handle_index_map<Vertex> dense_;
-  bool oriented_;
-  const std::size_t* expected_size_;
-  bool reserved_ = false;
-  std::vector<std::uint32_t> dropped_vertices_;
-  std::vector<std::array<std::uint32_t, 3>> triangles_;
-  std::size_t dropped_ = 0;
-  struct Used_vertex
-  {
-    Point point;
-    std::uint32_t vertex; // dense number
-  };
-  std::vector<Used_vertex> used_;     // by `take_points()`
-  std::vector<std::uint32_t> number_; // dense number -> number of the used vertex
-};
-
 } // namespace internal
 } // namespace Lex_optimal_chains
 
@@ -426,6 +316,7 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
   const unsigned threads = choose_parameter(get_parameter(np, LOC::internal_np::number_of_threads), 1u);
   const bool remove = choose_parameter(get_parameter(np, LOC::internal_np::remove_blocking_points), false);
   const bool drop = choose_parameter(get_parameter(np, LOC::internal_np::drop_boundary_triangles), false);
+  const bool keep = choose_parameter(get_parameter(np, LOC::internal_np::keep_non_manifold), false);
   const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const LOC::Coefficient_field field = LOC::internal::coefficient_field_of(np);
 
@@ -462,13 +353,24 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
     // first one is written)
     LOC::internal::Chain_soup_builder<Triangulation> builder(dt.tds(), field == LOC::Coefficient_field::Q,
                                                              drop ? boundary_only : none, &report.number_of_facets);
-    auto sink = boost::make_function_output_iterator(
-      [&builder](const std::pair<typename Triangulation::Facet, std::int64_t>& fk) { builder.add(fk.first, fk.second); });
-    if(field == LOC::Coefficient_field::Z2)
-      LOC::internal::optimal_chain_with_boundary<LOC::internal::Z2_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
-    else
-      LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
-    watch.lap();
+    auto write_chain = [&](const auto& add) {
+      auto sink = boost::make_function_output_iterator(
+        [&add](const std::pair<typename Triangulation::Facet, std::int64_t>& fk) { add(fk.first, fk.second); });
+      if(field == LOC::Coefficient_field::Z2)
+        LOC::internal::optimal_chain_with_boundary<LOC::internal::Z2_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
+      else
+        LOC::internal::optimal_chain_with_boundary<LOC::internal::Integer_arithmetic>(dt, cycle, np, callback, 0.35, sink, report);
+      watch.lap();
+    };
+    const LOC::internal::Open_surface_repair_result resolution =
+      LOC::internal::resolved_open_chain(dt, field == LOC::Coefficient_field::Q, keep, builder, write_chain);
+    report.resolved_non_manifold_vertices = resolution.statistics.repaired_vertices;
+    report.resolution_changed_facets = resolution.changed_facets;
+    report.resolution_seconds = watch.lap();
+    if(verbose)
+      std::cerr << "Lex_optimal_chains: " << resolution.statistics.repaired_vertices << " non-manifold vertices resolved ("
+                << resolution.statistics.changed_cells << " cells changed, " << resolution.changed_facets
+                << " facets changed, " << resolution.statistics.rounds << " rounds) in " << report.resolution_seconds << " s\n";
     builder.take_points();
     dt.clear(); // before the soup is sorted: peak memory
     builder.finish(soup_points, soup, report.dropped_triangles);

@@ -22,6 +22,7 @@ enum coefficient_field_t { coefficient_field };
 enum relative_facets_t { relative_facets };
 enum remove_blocking_points_t { remove_blocking_points };
 enum drop_boundary_triangles_t { drop_boundary_triangles };
+enum keep_non_manifold_t { keep_non_manifold };
 
 } // namespace internal_np
 
@@ -61,6 +62,8 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(relative_facets)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(remove_blocking_points)
 /// Drops the triangles that touch a vertex of the boundary that is not an input point.
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(drop_boundary_triangles)
+/// Keeps the optimal chain as it is, without resolving its non-manifold vertices.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(keep_non_manifold)
 
 #undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
 

@@ -147,6 +147,30 @@ public:
     for(std::uint32_t v = 0; v < vertex_positions.size(); ++v) vertex_points_[v] = vertex_positions.element(v)->point();
   }
 
+  // The numbers of the non-manifold vertices, in increasing order: the ends of the
+  // non-manifold edges, and the vertices around which the facets form several umbrellas
+  // (cycles of facets linked by twins). Before `complete()`.
+  std::vector<std::uint32_t> non_manifold_vertices() const
+  {
+    CGAL_precondition(!completed_);
+    std::vector<bool> seen(corners_.size(), false);
+    std::vector<std::uint8_t> umbrellas(vertex_points_.size(), 0);
+    std::vector<std::uint32_t> result(non_manifold_edge_ends_);
+    for(std::uint32_t c = 0; c < corners_.size(); ++c) {
+      if(seen[c]) continue;
+      std::uint32_t x = c;
+      do {
+        seen[x] = true;
+        x = next_corner_around_vertex(x);
+      } while(x != c);
+      std::uint8_t& n = umbrellas[corners_[c]];
+      if(n < 2 && ++n == 2) result.push_back(corners_[c]);
+    }
+    std::sort(result.begin(), result.end());
+    result.erase(std::unique(result.begin(), result.end()), result.end());
+    return result;
+  }
+
   // Finishes the surface without the triangulation, which may have been freed: one vertex
   // copy per umbrella, the statistics, and the canonical numbering that `build()` follows.
   // Must be called once, before `statistics()` and `build()`.
@@ -334,6 +358,8 @@ private:
                         [&](const std::uint32_t* first, const std::uint32_t* last) {
                           if(last - first != 2) { // a non-manifold edge (four or more): split
                             ++stats_.non_manifold_edges;
+                            non_manifold_edge_ends_.push_back(id[first[0]]);
+                            non_manifold_edge_ends_.push_back(id[3 * (first[0] / 3) + (first[0] % 3 + 1) % 3]);
                             return;
                           }
                           const std::uint32_t a = first[0], b = first[1];
@@ -385,6 +411,7 @@ private:
   std::vector<std::uint32_t> corners_;       // vertex numbers, 3 per facet (until `complete()`)
   std::vector<Point> vertex_points_;         // by vertex number (until `complete()`)
   std::vector<std::uint32_t> twin_;          // of each half-edge
+  std::vector<std::uint32_t> non_manifold_edge_ends_; // vertex numbers, with repetitions
   std::vector<std::uint32_t> corner_vertex_; // mesh vertex of each corner (after `complete()`)
   std::vector<Point> points_;                // of the mesh vertices (after `complete()`)
   Closed_surface_statistics stats_;
