@@ -171,9 +171,10 @@ std::vector<std::uint32_t> cells_of(const DT& dt, const Full_graph& graph, const
   return cells;
 }
 
-// Compares the facets and the inside of the contracted pipeline with the oracle, for the
-// automatic interior when `interior` is empty and otherwise for the cells holding `interior`
-// (whose points must lie inside cells), plus, for the automatic case, Algorithm 8 from
+// Compares the facets and the inside of the contracted pipeline (the optimal cycle kept as it
+// is: keep_non_manifold) with the oracle, for the automatic interior when `interior` is empty
+// and otherwise for the cells holding `interior` (whose points must lie inside cells), plus,
+// for the automatic case, Algorithm 8 from
 // `extra_sources` other single cells through the spanning tree.
 void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::vector<Point>& interior,
                                     const std::vector<Point>& exterior, const char* what, int extra_sources = 0)
@@ -209,7 +210,8 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
   if(interior.empty()) {
     const LI::Automatic_interior expected = full_most_persistent_void(graph, sinks);
     report = CGAL::lex_optimal_closed_surface(dt, std::back_inserter(got),
-                                              LOC::parameters::minimum_interior_persistence(0.0, LOC::parameters::exterior_points(exterior)));
+                                              LOC::parameters::minimum_interior_persistence(0.0, LOC::parameters::exterior_points(exterior,
+                                              LOC::parameters::keep_non_manifold(true))));
     assert(report.interior_persistence == expected.persistence);
     assert(got == full_cut(std::vector<std::uint32_t>{expected.cell}));
     // other single sources, through the spanning tree of the contracted pass
@@ -246,7 +248,8 @@ void check_against_full_algorithm_8(const std::vector<Point>& pts, const std::ve
     }
   } else {
     report = CGAL::lex_optimal_closed_surface(dt, std::back_inserter(got),
-                                              LOC::parameters::exterior_points(exterior, LOC::parameters::interior_points(interior)));
+                                              LOC::parameters::exterior_points(exterior, LOC::parameters::interior_points(interior,
+                                              LOC::parameters::keep_non_manifold(true))));
     assert(got == full_cut(cells_of(dt, graph, interior)));
   }
   std::cout << what << ": the contracted cut equals Algorithm 8 over all " << graph.records().size()

@@ -75,8 +75,9 @@ execute_process(COMMAND "${PROGRAM}" closed "${DATA}/points_3/kitten.xyz" "${WOR
 if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/kitten.ply")
   message(FATAL_ERROR "kitten: exit code ${rc}")
 endif()
-foreach(key delaunay_s order_s cut_s output_s total_s peak_rss_mb vertices faces components
-            boundary_edges non_manifold_vertices non_manifold_edges closed genus)
+foreach(key delaunay_s order_s cut_s resolution_s mesh_s write_s output_s total_s peak_rss_mb vertices faces
+            components boundary_edges non_manifold_vertices non_manifold_edges resolved_non_manifold_vertices
+            resolution_changed_triangles closed genus)
   string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
   if(missing)
     message(FATAL_ERROR "kitten: JSON has no '${key}': ${json}")
@@ -88,6 +89,13 @@ if(NOT closed STREQUAL "ON" OR NOT components EQUAL 1)
   message(FATAL_ERROR "kitten: not one closed component: ${json}")
 endif()
 message(STATUS "kitten: ${json}")
+# .ply is written binary, unless --ascii
+file(READ "${WORK}/kitten.ply" kitten_header LIMIT 60)
+execute_process(COMMAND "${PROGRAM}" closed "${DATA}/points_3/kitten.xyz" "${WORK}/kitten_ascii.ply" --ascii RESULT_VARIABLE rc)
+file(READ "${WORK}/kitten_ascii.ply" kitten_ascii_header LIMIT 60)
+if(NOT kitten_header MATCHES "format binary_little_endian" OR NOT rc EQUAL 0 OR NOT kitten_ascii_header MATCHES "format ascii")
+  message(FATAL_ERROR "kitten: .ply not binary by default, or not text with --ascii")
+endif()
 
 # kitten.xyz as OFF and PLY files whose header declares 5,000 of its 5,210 points: CGAL's
 # readers stop after 5,000 and would ignore the rest; lex_reconstruct refuses the file. With
@@ -178,8 +186,9 @@ foreach(field q z2)
   if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/b9_${field}.off")
     message(FATAL_ERROR "b9_training (${field}): exit code ${rc}")
   endif()
-  foreach(key delaunay_s order_s representative_s optimal_chain_s output_s total_s peak_rss_mb vertices faces
-              components boundary_edges non_manifold_vertices non_manifold_edges closed genus)
+  foreach(key delaunay_s order_s representative_s optimal_chain_s resolution_s mesh_s write_s output_s total_s
+              peak_rss_mb vertices faces components boundary_edges non_manifold_vertices non_manifold_edges
+              resolved_non_manifold_vertices resolution_changed_triangles closed genus)
     string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
     if(missing)
       message(FATAL_ERROR "b9_training: JSON has no '${key}': ${json}")
@@ -189,11 +198,27 @@ foreach(field q z2)
   string(JSON components GET "${json}" components)
   string(JSON faces GET "${json}" faces)
   string(JSON dropped GET "${json}" dropped_triangles)
+  string(JSON loops GET "${json}" boundary_loops)
+  string(JSON split GET "${json}" non_manifold_edges)
   if(closed STREQUAL "ON" OR NOT components EQUAL 1 OR faces LESS 20000 OR dropped EQUAL 0)
     message(FATAL_ERROR "b9_training (${field}): not one open surface without its skirt: ${json}")
   endif()
+  # one disk: the non-manifold edges of the optimum are resolved, not split into holes
+  if(NOT loops EQUAL 1 OR NOT split EQUAL 0)
+    message(FATAL_ERROR "b9_training (${field}): not one boundary loop without split edges: ${json}")
+  endif()
   message(STATUS "b9_training (${field}): ${json}")
 endforeach()
+# --keep-non-manifold: the optimum as it is, its non-manifold edges split (holes in the terrain)
+execute_process(COMMAND "${PROGRAM}" open "${DATA}/points_3/b9_training.ply" "${WORK}/b9_raw.off" --auto-boundary
+                        --keep-non-manifold --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE json)
+string(JSON loops GET "${json}" boundary_loops)
+string(JSON split GET "${json}" non_manifold_edges)
+string(JSON resolved GET "${json}" resolved_non_manifold_vertices)
+if(NOT rc EQUAL 0 OR loops LESS 2 OR split EQUAL 0 OR NOT resolved EQUAL 0)
+  message(FATAL_ERROR "b9_training --keep-non-manifold: the optimum is not kept as it is: ${json}")
+endif()
 
 # ----- lex_optimal_triangulation_2: bad input gives one line and exit code 1 -----
 if(TRIANGULATION_PROGRAM)

@@ -1,5 +1,7 @@
 // Benchmark of closed surface reconstruction against CGAL's Delaunay triangulation and
-// advancing front reconstruction, on points sampled from a noisy torus.
+// advancing front reconstruction, on points sampled from a noisy torus. "resolution" is the
+// resolution of the non-manifold vertices, "mesh" the rest of the making of the mesh;
+// "split" counts the non-manifold vertices left (split in the mesh).
 //
 //   benchmark_closed_surface [N ...] [--repeat R]
 //                                              runs every measurement for each N, each in a
@@ -68,7 +70,9 @@ static int one(const std::string& mode, std::size_t n)
     const auto r = CGAL::lex_optimal_closed_surface_reconstruction(pts, mesh);
     t.stop();
     json << ",\"delaunay_s\":" << r.delaunay_seconds << ",\"order_s\":" << r.order_seconds
-         << ",\"cut_s\":" << r.cut_seconds << ",\"output_s\":" << r.output_seconds << ",\"total_s\":" << t.time()
+         << ",\"cut_s\":" << r.cut_seconds << ",\"resolution_s\":" << r.resolution_seconds
+         << ",\"mesh_s\":" << r.output_seconds << ",\"total_s\":" << t.time()
+         << ",\"resolved\":" << r.resolved_non_manifold_vertices << ",\"split_vertices\":" << r.non_manifold_vertices
          << ",\"faces\":" << r.mesh_faces << ",\"genus\":" << r.genus << ",\"components\":" << r.components
          << ",\"exactly_ordered\":" << r.number_of_exactly_ordered_triangles << ",\"triangles\":" << r.number_of_triangles;
   } else if(mode == "afsr") {
@@ -105,7 +109,8 @@ int main(int argc, char** argv)
   if(sizes.empty()) sizes = {100000, 1000000};
   pin_measurements_to_one_cpu(); // the processes of the ratios on the same CPU
   std::cout << std::fixed << std::setprecision(3)
-            << "points     delaunay_s  lex_total_s  order+cut_s  (order+cut)/DT  total/DT  peakRSS_lex/DT  afsr_s  afsr/lex\n";
+            << "points     delaunay_s  lex_total_s  order+cut_s  resolution_s  mesh_s  (order+cut)/DT  (order+cut+res+mesh)/DT"
+               "  mesh_us/point  total/DT  peakRSS_lex/DT  afsr_s  afsr/lex  resolved  split\n";
   for(std::size_t n : sizes) {
     // the runs of one repetition follow each other: their ratios are taken before the medians
     std::vector<std::map<std::string, double>> ds, ls, as, rs;
@@ -115,17 +120,21 @@ int main(int argc, char** argv)
       std::map<std::string, double> a;
       if(n <= 1000000) a = run_child(std::string(argv[0]) + " --one afsr " + std::to_string(n));
       const double dt = d["delaunay_s"], oc = l["order_s"] + l["cut_s"];
-      std::map<std::string, double> r{{"order_cut_s", oc}, {"order_cut_dt", oc / dt}, {"total_dt", l["total_s"] / dt},
-                                      {"peak_dt", l["peak_rss_mb"] / d["peak_rss_mb"]}};
+      const double after = oc + l["resolution_s"] + l["mesh_s"];
+      std::map<std::string, double> r{{"order_cut_s", oc}, {"order_cut_dt", oc / dt}, {"after_dt", after / dt},
+                                      {"mesh_us", 1e6 * (l["resolution_s"] + l["mesh_s"]) / double(n)},
+                                      {"total_dt", l["total_s"] / dt}, {"peak_dt", l["peak_rss_mb"] / d["peak_rss_mb"]}};
       if(a.count("total_s")) r["afsr_lex"] = a["total_s"] / l["total_s"];
       ds.push_back(d); ls.push_back(l); as.push_back(a); rs.push_back(r);
     }
     auto d = median(ds), l = median(ls), a = median(as), r = median(rs);
     std::cout << std::setw(9) << n << "  " << std::setw(10) << d["delaunay_s"] << "  " << std::setw(11) << l["total_s"] << "  "
-              << std::setw(11) << r["order_cut_s"] << "  " << std::setw(14) << r["order_cut_dt"] << "  " << std::setw(8)
-              << r["total_dt"] << "  " << std::setw(14) << r["peak_dt"] << "  ";
+              << std::setw(11) << r["order_cut_s"] << "  " << std::setw(12) << l["resolution_s"] << "  " << std::setw(6)
+              << l["mesh_s"] << "  " << std::setw(14) << r["order_cut_dt"] << "  " << std::setw(23) << r["after_dt"] << "  "
+              << std::setw(13) << r["mesh_us"] << "  " << std::setw(8) << r["total_dt"] << "  " << std::setw(14) << r["peak_dt"] << "  ";
     if(a.count("total_s")) std::cout << std::setw(6) << a["total_s"] << "  " << std::setw(8) << r["afsr_lex"];
     else std::cout << "     -         -";
+    std::cout << "  " << std::setw(8) << l["resolved"] << "  " << std::setw(5) << l["split_vertices"];
     std::cout << "   (peak MB: DT " << d["peak_rss_mb"] << ", lex " << l["peak_rss_mb"] << ")";
     if(repeat > 1) std::cout << "  medians of " << repeat << " runs";
     std::cout << std::endl;

@@ -74,7 +74,9 @@ static int one(const std::string& mode, std::size_t n, bool verbose)
     t.stop();
     json << ",\"delaunay_s\":" << r.delaunay_seconds << ",\"representative_s\":" << r.representative_seconds
          << ",\"order_s\":" << r.order_seconds << ",\"algorithm10_s\":" << r.optimal_chain_seconds
-         << ",\"output_s\":" << r.output_seconds << ",\"total_s\":" << t.time() << ",\"vertices\":" << r.mesh_vertices
+         << ",\"resolution_s\":" << r.resolution_seconds << ",\"output_s\":" << r.output_seconds
+         << ",\"total_s\":" << t.time() << ",\"vertices\":" << r.mesh_vertices
+         << ",\"resolved\":" << r.resolved_non_manifold_vertices
          << ",\"faces\":" << r.mesh_faces << ",\"representative_triangles\":" << r.number_of_representative_triangles
          << ",\"non_manifold_vertices\":" << r.non_manifold_vertices;
   } else {
@@ -100,7 +102,7 @@ int main(int argc, char** argv)
   if(sizes.empty()) sizes = {1000000, 5000000};
   pin_measurements_to_one_cpu(); // the processes of the ratios on the same CPU
   std::cout << std::fixed << std::setprecision(3)
-            << "points     delaunay_s  representative_s  order_s  alg10_s  optimal_chain_s  output_s  total_s"
+            << "points     delaunay_s  representative_s  order_s  alg10_s  optimal_chain_s  resolution_s  output_s  total_s"
                "  repr/DT  chain/DT  total/DT  peak_GB  peak/DT\n";
   for(std::size_t n : sizes) {
     // the runs of one repetition follow each other: their ratios are taken before the medians
@@ -116,10 +118,12 @@ int main(int argc, char** argv)
     auto d = median(ds), l = median(ls), r = median(rs);
     std::cout << std::setw(9) << n << "  " << std::setw(10) << d["delaunay_s"] << "  " << std::setw(16) << l["representative_s"]
               << "  " << std::setw(7) << l["order_s"] << "  " << std::setw(7) << l["algorithm10_s"] << "  "
-              << std::setw(15) << r["chain_s"] << "  " << std::setw(8) << l["output_s"] << "  " << std::setw(7) << l["total_s"]
+              << std::setw(15) << r["chain_s"] << "  " << std::setw(12) << l["resolution_s"] << "  " << std::setw(8)
+              << l["output_s"] << "  " << std::setw(7) << l["total_s"]
               << "  " << std::setw(7) << r["repr_dt"] << "  " << std::setw(8) << r["chain_dt"] << "  "
               << std::setw(8) << r["total_dt"] << "  " << std::setw(7) << l["peak_rss_mb"] / 1024 << "  "
               << std::setw(7) << r["peak_dt"];
+    std::cout << "  (" << l["resolved"] << " non-manifold vertices resolved, " << l["non_manifold_vertices"] << " split)";
     if(repeat > 1) std::cout << "  medians of " << repeat << " runs";
     std::cout << std::endl;
   }

@@ -398,9 +398,10 @@ void reconstruct_in(Triangulation& dt, std::vector<Point>& points, PolygonMesh& 
 Reconstructs a closed surface from a point cloud: builds the 3D Delaunay triangulation of the
 points, computes the lexicographic optimal 2-cycle that separates the interior from the
 outside (see `lex_optimal_closed_surface()`), and adds it to `mesh` as a closed, oriented
-(outward) triangle mesh. Non-manifold edges and vertices of the boundary of the union of
-inside tetrahedra are split, one copy per wedge around an edge and one per umbrella around a
-vertex, as for an infinitesimally shrunk union; their numbers are reported.
+(outward) triangle mesh. The non-manifold vertices of the cycle are resolved first, unless
+`keep_non_manifold` is set; non-manifold edges and vertices left in the boundary of the union
+of inside tetrahedra are split, one copy per wedge around an edge and one per umbrella around
+a vertex, as for an infinitesimally shrunk union; their numbers are reported.
 
 \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
 \tparam PolygonMesh a model of `MutableFaceGraph` whose points are of the type of the input

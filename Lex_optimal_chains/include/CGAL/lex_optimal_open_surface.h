@@ -247,9 +247,11 @@ points that lie in the closed diametral ball of a missing edge keep it out of th
 triangulation, and can be removed with `remove_blocking_points(true)` (once these balls are
 empty the edges are Gabriel edges, hence Delaunay edges).
 
-The mesh is the chain made a valid polygon mesh: an edge of three triangles or more is
-split, one copy per triangle, and a vertex gets one copy per umbrella (per fan of its
-triangles joined by edges); these are counted in the report. Over Q the faces keep the
+The non-manifold vertices of the chain are resolved by local changes that keep its
+boundary, chosen by the lexicographic order (see the user manual, section "Manifold output"),
+unless `keep_non_manifold` is set. The mesh is the chain made a valid polygon mesh: an edge
+of three triangles or more that is left is split, one copy per triangle, and a vertex gets one
+copy per umbrella (per fan of its triangles joined by edges); these are counted in the report. Over Q the faces keep the
 orientation of the chain, whose boundary is the polylines with their orientation; over Z2
 the triangles are oriented by a traversal across edges, and a non-orientable optimum (a
 Möbius strip) is cut along the edges where the orientation disagrees (`orientation_cuts`). A triangle whose coefficient is not 1 or -1 (possible only
@@ -279,6 +281,11 @@ disjoint, each edge oriented from a vertex to the next
     \cgalParamDescription{removes the input points in the diametral balls of the boundary edges that are not Delaunay edges}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`: such an edge is an error}
+  \cgalParamNEnd
+  \cgalParamNBegin{keep_non_manifold}
+    \cgalParamDescription{if `true`, the optimal chain is meshed as it is (its non-manifold vertices and edges split); otherwise its non-manifold vertices are resolved first}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{drop_boundary_triangles}
     \cgalParamDescription{drops the triangles that touch a boundary vertex that is not an input point (Fig. 4.26 of the thesis: the skirt joining an outer polygon to a terrain)}

@@ -18,10 +18,10 @@
 // component of level 1 kept and every other cell set to 0; one component of level 0 kept
 // and every other cell set to 1; all cells set to 0; all set to 1 (v leaves the chain).
 // Among the candidates that are manifold at v and that only change cells the caller allows,
-// the one whose chain is lexicographically smallest is applied: the facets that any
-// candidate can change (those of the star's cells) are sorted by the order of the
-// triangles, and the chains compared from the largest facet down, the smaller chain being the
-// one without the first facet where they differ. The order is exact (Triangle_order_3.h),
+// the one whose chain is lexicographically smallest is applied: the facets where the
+// candidate chains differ (all among those of the star's cells) are sorted by the order of
+// the triangles, and the chains compared from the largest facet down, the smaller chain being
+// the one without the first facet where they differ. The order is exact (Triangle_order_3.h),
 // so the choice does not depend on the input order or on memory addresses.
 //
 // A change can make the vertices of the changed cells non-manifold; they are examined in
@@ -219,36 +219,61 @@ private:
     return result;
   }
 
-  // The finite facets of the star's cells, each once, sorted from the largest in the order
-  // of the triangles.
-  std::vector<Star_facet> facets_by_decreasing_order(const Star& star) const
+  // The finite facets of the star's cells, each once.
+  std::vector<Star_facet> star_facets(const Star& star) const
   {
     std::vector<Star_facet> facets;
-    std::vector<Triangle_order_key_3> keys;
     for(std::size_t s = 0; s < star.cells.size(); ++s) {
       const Cell* c = star.cells[s];
       for(int j = 0; j < 4; ++j) {
         const int t = star.across[s][j];
         if(t >= 0 && t < int(s)) continue; // named from the smaller position
-        Triangle_coordinates_3 coordinates;
         bool finite = true;
-        for(int k = 1; k < 4; ++k) {
-          const Vertex_handle w = c->vertex((j + k) & 3);
-          if(dt_.is_infinite(w)) { finite = false; break; }
-          coordinates[k - 1] = {{w->point().x(), w->point().y(), w->point().z()}};
-        }
-        if(!finite) continue; // never in the chain, whatever the candidate
-        facets.push_back(Star_facet{int(s), j, t, chain_.coefficient(c, j)});
-        keys.emplace_back(coordinates);
+        for(int k = 1; k < 4 && finite; ++k) finite = !dt_.is_infinite(c->vertex((j + k) & 3));
+        if(finite) facets.push_back(Star_facet{int(s), j, t, chain_.coefficient(c, j)}); // else never in the chain
       }
     }
-    std::vector<std::size_t> order(facets.size());
+    return facets;
+  }
+
+  Triangle_coordinates_3 coordinates(const Star& star, const Star_facet& f) const
+  {
+    Triangle_coordinates_3 t;
+    for(int k = 1; k < 4; ++k) {
+      const auto& p = star.cells[f.cell]->vertex((f.index + k) & 3)->point();
+      t[k - 1] = {{p.x(), p.y(), p.z()}};
+    }
+    return t;
+  }
+
+  // The candidate (index in `supports`, the memberships of `facets` in each candidate chain)
+  // whose chain is lexicographically smallest: the facets where the candidates differ are
+  // sorted by the order of the triangles, and the chains compared from the largest facet
+  // down, the smaller one being without the first facet where they differ. Equal chains: the
+  // first candidate.
+  std::size_t smallest_chain(const Star& star, const std::vector<Star_facet>& facets,
+                             const std::vector<std::vector<char>>& supports) const
+  {
+    if(supports.size() == 1) return 0;
+    std::vector<std::size_t> differing;
+    for(std::size_t i = 0; i < facets.size(); ++i)
+      for(std::size_t k = 1; k < supports.size(); ++k)
+        if(supports[k][i] != supports[0][i]) { differing.push_back(i); break; }
+    std::vector<Triangle_order_key_3> keys;
+    for(const std::size_t i : differing) keys.emplace_back(coordinates(star, facets[i]));
+    std::vector<std::size_t> order(differing.size()); // positions in `differing`, from the largest facet
     for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[b] < keys[a]; });
-    std::vector<Star_facet> sorted;
-    sorted.reserve(order.size());
-    for(const std::size_t i : order) sorted.push_back(facets[i]);
-    return sorted;
+    std::size_t best = 0;
+    for(std::size_t k = 1; k < supports.size(); ++k)
+      for(const std::size_t o : order) {
+        const std::size_t i = differing[o];
+        if(supports[k][i] != supports[best][i]) {
+          if(supports[k][i] == 0) best = k;
+          break;
+        }
+      }
+    return best;
   }
 
   // The coefficient of a facet once the star's levels change from `star.level` to `levels`.
@@ -284,21 +309,21 @@ private:
     Star star;
     if(!make_star(v, star) || is_manifold(star, star.level)) return;
     ++stats.examined_vertices;
-    const std::vector<Star_facet> facets = facets_by_decreasing_order(star);
-    std::vector<int> best;
-    std::vector<char> best_support, support;
-    for(std::vector<int>& levels : candidates(star)) {
-      if(!admissible(star, facets, levels, support)) continue;
-      // lexicographically smaller: no facet where the best has one first, from the largest
-      if(best.empty() || std::lexicographical_compare(support.begin(), support.end(), best_support.begin(), best_support.end())) {
-        best.swap(levels);
-        best_support.swap(support);
+    const std::vector<Star_facet> facets = star_facets(star);
+    std::vector<std::vector<int>> allowed;
+    std::vector<std::vector<char>> supports;
+    std::vector<char> support;
+    for(std::vector<int>& levels : candidates(star))
+      if(admissible(star, facets, levels, support)) {
+        allowed.push_back(std::move(levels));
+        supports.push_back(support);
       }
-    }
-    if(best.empty()) return;
+    if(allowed.empty()) return;
+    const std::size_t chosen = smallest_chain(star, facets, supports);
+    const std::vector<int>& best = allowed[chosen];
     ++stats.repaired_vertices;
     for(std::size_t i = 0; i < facets.size(); ++i)
-      if(best_support[i] != (facets[i].coefficient != 0)) changed_facet(star.cells[facets[i].cell], facets[i].index);
+      if(supports[chosen][i] != (facets[i].coefficient != 0)) changed_facet(star.cells[facets[i].cell], facets[i].index);
     for(std::size_t s = 0; s < best.size(); ++s) {
       const int delta = best[s] - star.level[s];
       if(delta == 0) continue;
