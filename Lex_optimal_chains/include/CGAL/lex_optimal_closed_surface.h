@@ -262,8 +262,8 @@ move between the inside and the outside (never the constraint cells), the change
 among a few local candidates as the one giving the lexicographically smallest cycle (see the
 user manual, section "Manifold output"); the result is a 2-manifold wherever such a change
 exists. Each facet is written to `facets` as a `DT::Facet` `(c, i)` where `c` is the inside
-cell: the facets of the optimal cycle that are kept, in decreasing triangle order, then the
-facets added by the resolution, in decreasing triangle order. The triangle
+cell: the facets of the optimal cycle that the resolution left as they were, in decreasing
+triangle order, then the facets that it added or reversed, in decreasing triangle order. The triangle
 `c->vertex((i+1)&3), c->vertex((i+2)&3), c->vertex((i+3)&3)`, with its last two vertices
 swapped when `i` is odd, is oriented outward.
 
@@ -416,7 +416,7 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
     \cgalParamDefault{`CGAL::Identity_property_map`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB); the result does not depend on it}
+    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower); the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd

@@ -273,7 +273,7 @@ disjoint, each edge oriented from a vertex to the next
     \cgalParamDefault{`CGAL::Identity_property_map`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB); the result does not depend on it}
+    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower); the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd

@@ -75,76 +75,60 @@ public:
     // Internally the facets are kept in the order of their cells in memory, so that the
     // corners, edges and umbrellas are read nearby; `rank_of_` keeps the given (canonical)
     // order for the numbering of the output.
-    std::vector<std::uint32_t> keys; // in memory order
     {
       std::vector<std::uint64_t> order(nf), buffer;
       for(std::size_t k = 0; k < nf; ++k) order[k] = (std::uint64_t(facet_keys[k]) << 32) | k;
       std::vector<std::uint32_t>().swap(facet_keys);
       radix_sort_high_words(order, buffer);
       std::vector<std::uint64_t>().swap(buffer);
-      keys.resize(nf);
+      keys_.resize(nf);
       rank_of_.resize(nf);
       for(std::size_t k = 0; k < nf; ++k) {
-        keys[k] = std::uint32_t(order[k] >> 32);
+        keys_[k] = std::uint32_t(order[k] >> 32);
         rank_of_[k] = std::uint32_t(order[k]);
       }
     }
-    const Triangulation_reader reader{keys, cells, vertex_positions, inside};
-    // corners: the vertex numbers of the outward vertices of each facet, rotated to start at
-    // the lexicographically smallest point, so that the output does not depend on the vertex
-    // order in the cells
+    const Triangulation_reader reader{keys_, cells, vertex_positions, inside};
     corners_.resize(3 * nf);
-    // the cells (in increasing address, but far apart) and then their vertices are fetched
-    // early: the reads of successive facets overlap instead of waiting one after the other
-    constexpr std::size_t cells_ahead = 16, vertices_ahead = 8;
-    for(std::size_t k = 0; k < nf; ++k) {
-      if(k + cells_ahead < nf) prefetch_object(reader.cell(k + cells_ahead));
-      if(k + vertices_ahead < nf) {
-        const Cell* a = reader.cell(k + vertices_ahead);
-        for(const int i : outward_facet_vertices(reader.index(k + vertices_ahead))) prefetch_object(&*a->vertex(i));
-      }
-      const Cell* c = reader.cell(k);
-      auto ov = outward_facet_vertices(reader.index(k));
-      if(!reader.named_from_inside(k)) std::swap(ov[1], ov[2]); // out of the other cell
-      const Vertex* v[3];
-      for(int i = 0; i < 3; ++i) v[i] = &*c->vertex(ov[i]);
-      int first = 0;
-      for(int i = 1; i < 3; ++i)
-        if(CGAL::compare_xyz(v[i]->point(), v[first]->point()) == SMALLER) first = i;
-      for(int i = 0; i < 3; ++i) corners_[3 * k + i] = vertex_positions.index(v[(first + i) % 3]);
-    }
-    // twins: an edge of the triangulation with exactly two boundary facets joins them (the
-    // boundary of a union of cells is a cycle, so no other facet can be met when turning
-    // around it); they are found by bucketing the half-edges by their smaller vertex
-    twin_.assign(3 * nf, UINT32_MAX);
-    if(pair_twins_by_vertices(vertex_positions.size()) < 3 * nf) {
-      // non-manifold edges (four or more boundary facets): turn around them through the
-      // inside cells. The facet met there has its half-edge on that edge unpaired too, so the
-      // table holds only the facets with an unpaired half-edge (a few, not all of them: a
-      // table of all the facets cost 32 MB of fresh pages at 1M points)
-      std::vector<std::uint32_t> unpaired; // positions (in memory order) of these facets
-      for(std::uint32_t k = 0; k < nf; ++k)
-        if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)
-          unpaired.push_back(k);
-      Dense_numbers table(unpaired.size()); // their keys, named from their inside cells
-      for(const std::uint32_t k : unpaired) {
-        const auto f = reader.from_inside(k);
-        table.insert(facet_key(cells.index(f.first), f.second)); // number i: unpaired[i]
-      }
-      CGAL_assertion(table.size() == unpaired.size()); // distinct facets, distinct keys
-      for(const std::uint32_t k : unpaired)
-        for(int e = 0; e < 3; ++e) {
-          const std::uint32_t h = std::uint32_t(3 * k + e);
-          if(twin_[h] != UINT32_MAX) continue;
-          const std::uint32_t t = find_twin(reader, table, unpaired, k, e);
-          CGAL_assertion(twin_[t] == UINT32_MAX);
-          twin_[h] = t;
-          twin_[t] = h;
-        }
-    }
+    read_corners(reader, 0);
+    pair_twins(reader);
     // the points, by vertex number
     vertex_points_.resize(vertex_positions.size());
     for(std::uint32_t v = 0; v < vertex_positions.size(); ++v) vertex_points_[v] = vertex_positions.element(v)->point();
+  }
+
+  // Replaces the facets of ranks flagged in `removed` (by rank in the order given to the
+  // constructor) by the facets `added` (keys of either cell), which follow the facets kept in
+  // the canonical order; `inside` is the new side of the cells. Only the added facets are read
+  // from the triangulation; the twins are paired anew. Before `complete()`.
+  void replace_facets(const std::vector<bool>& removed, const std::vector<std::uint32_t>& added,
+                      const Handle_index_map<Cell>& cells, const Handle_index_map<Vertex>& vertex_positions,
+                      const std::vector<bool>& inside)
+  {
+    CGAL_precondition(!completed_ && removed.size() == rank_of_.size());
+    std::vector<std::uint32_t> new_rank(removed.size()); // of the facets kept, in the given order
+    std::uint32_t kept = 0;
+    for(std::size_t r = 0; r < removed.size(); ++r) new_rank[r] = removed[r] ? UINT32_MAX : kept++;
+    std::size_t n = 0;
+    for(std::size_t k = 0; k < keys_.size(); ++k) {
+      if(removed[rank_of_[k]]) continue;
+      keys_[n] = keys_[k];
+      rank_of_[n] = new_rank[rank_of_[k]];
+      for(int e = 0; e < 3; ++e) corners_[3 * n + e] = corners_[3 * k + e];
+      ++n;
+    }
+    keys_.resize(n + added.size());
+    rank_of_.resize(n + added.size());
+    corners_.resize(3 * (n + added.size()));
+    for(std::size_t i = 0; i < added.size(); ++i) {
+      keys_[n + i] = added[i];
+      rank_of_[n + i] = std::uint32_t(kept + i);
+    }
+    const Triangulation_reader reader{keys_, cells, vertex_positions, inside};
+    read_corners(reader, n);
+    stats_.non_manifold_edges = 0;
+    non_manifold_edge_ends_.clear();
+    pair_twins(reader);
   }
 
   // The numbers of the non-manifold vertices, in increasing order: the ends of the
@@ -178,6 +162,7 @@ public:
   {
     CGAL_precondition(!completed_);
     completed_ = true;
+    std::vector<std::uint32_t>().swap(keys_);
     const std::size_t nf = rank_of_.size();
     // one vertex copy per umbrella (the cycle of corners around a vertex linked by twins).
     // Umbrellas are walked in the memory order of the facets (their corners are then
@@ -343,6 +328,67 @@ private:
     }
   };
 
+  // The corners of the facets from position `from` on (in memory order): the vertex numbers
+  // of the outward vertices of each facet, rotated to start at the lexicographically smallest
+  // point, so that the output does not depend on the vertex order in the cells.
+  void read_corners(const Triangulation_reader& reader, std::size_t from)
+  {
+    const std::size_t nf = keys_.size();
+    // the cells (in increasing address, but far apart) and then their vertices are fetched
+    // early: the reads of successive facets overlap instead of waiting one after the other
+    constexpr std::size_t cells_ahead = 16, vertices_ahead = 8;
+    for(std::size_t k = from; k < nf; ++k) {
+      if(k + cells_ahead < nf) prefetch_object(reader.cell(k + cells_ahead));
+      if(k + vertices_ahead < nf) {
+        const Cell* a = reader.cell(k + vertices_ahead);
+        for(const int i : outward_facet_vertices(reader.index(k + vertices_ahead))) prefetch_object(&*a->vertex(i));
+      }
+      const Cell* c = reader.cell(k);
+      auto ov = outward_facet_vertices(reader.index(k));
+      if(!reader.named_from_inside(k)) std::swap(ov[1], ov[2]); // out of the other cell
+      const Vertex* v[3];
+      for(int i = 0; i < 3; ++i) v[i] = &*c->vertex(ov[i]);
+      int first = 0;
+      for(int i = 1; i < 3; ++i)
+        if(CGAL::compare_xyz(v[i]->point(), v[first]->point()) == SMALLER) first = i;
+      for(int i = 0; i < 3; ++i) corners_[3 * k + i] = reader.vertices.index(v[(first + i) % 3]);
+    }
+  }
+
+  // The twins of all the half-edges. An edge of the triangulation with exactly two boundary
+  // facets joins them (the boundary of a union of cells is a cycle, so no other facet can be
+  // met when turning around it); they are found by bucketing the half-edges by their smaller
+  // vertex.
+  void pair_twins(const Triangulation_reader& reader)
+  {
+    const std::size_t nf = keys_.size();
+    twin_.assign(3 * nf, UINT32_MAX);
+    if(pair_twins_by_vertices(reader.vertices.size()) == 3 * nf) return;
+    // non-manifold edges (four or more boundary facets): turn around them through the
+    // inside cells. The facet met there has its half-edge on that edge unpaired too, so the
+    // table holds only the facets with an unpaired half-edge (a few, not all of them: a
+    // table of all the facets cost 32 MB of fresh pages at 1M points)
+    std::vector<std::uint32_t> unpaired; // positions (in memory order) of these facets
+    for(std::uint32_t k = 0; k < nf; ++k)
+      if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)
+        unpaired.push_back(k);
+    Dense_numbers table(unpaired.size()); // their keys, named from their inside cells
+    for(const std::uint32_t k : unpaired) {
+      const auto f = reader.from_inside(k);
+      table.insert(facet_key(reader.cells.index(f.first), f.second)); // number i: unpaired[i]
+    }
+    CGAL_assertion(table.size() == unpaired.size()); // distinct facets, distinct keys
+    for(const std::uint32_t k : unpaired)
+      for(int e = 0; e < 3; ++e) {
+        const std::uint32_t h = std::uint32_t(3 * k + e);
+        if(twin_[h] != UINT32_MAX) continue;
+        const std::uint32_t t = find_twin(reader, table, unpaired, k, e);
+        CGAL_assertion(twin_[t] == UINT32_MAX);
+        twin_[h] = t;
+        twin_[t] = h;
+      }
+  }
+
   // The corner after `c` around its vertex: the twin of the half-edge that enters the vertex
   // in the facet of `c` starts at that vertex in the next facet.
   std::uint32_t next_corner_around_vertex(std::uint32_t c) const { return twin_[3 * (c / 3) + (c % 3 + 2) % 3]; }
@@ -407,6 +453,7 @@ private:
   }
 
   bool completed_ = false;
+  std::vector<std::uint32_t> keys_;          // of the facets, in memory order (until `complete()`)
   std::vector<std::uint32_t> rank_of_;       // memory order -> canonical rank (until `complete()`)
   std::vector<std::uint32_t> corners_;       // vertex numbers, 3 per facet (until `complete()`)
   std::vector<Point> vertex_points_;         // by vertex number (until `complete()`)

@@ -74,6 +74,8 @@ struct Closed_surface_repair_result
   Manifold_repair_statistics statistics;
   std::size_t removed_facets = 0, added_facets = 0;
   std::size_t moved_pockets = 0; // regions cut off their side by the changes, moved
+  std::vector<bool> removed;        // the facets taken out of their place, by position in the cycle given
+  std::vector<std::uint32_t> added; // the facets put after the others (new, or reversed), in that order
   double surface_seconds = 0; // to make the surface of the given cycle (the rest: detection and resolution)
 };
 
@@ -141,8 +143,9 @@ std::size_t move_unconstrained_regions(const Handle_index_map<typename Triangula
 }
 
 // Replaces, in the cycle `facets` (in decreasing order), the facets whose keys (both) are in
-// `touched` (sorted) by those of them that bound the inside cells now: the facets kept stay in
-// their order, the facets added follow in decreasing order.
+// `touched` (sorted) by those of them that bound the inside cells now: the facets not touched
+// stay in their order, the touched ones that bound the inside cells follow in decreasing order
+// (a touched facet may stay in the cycle reversed, its two cells having changed sides).
 template <class Triangulation>
 void update_cycle(const Handle_index_map<typename Triangulation::Cell>& cells, const Inside_cells_chain<Triangulation>& chain,
                   const std::vector<std::uint32_t>& touched, std::vector<std::uint32_t>& facets,
@@ -157,24 +160,27 @@ void update_cycle(const Handle_index_map<typename Triangulation::Cell>& cells, c
   };
   std::vector<bool> touched_cell(cells.size(), false); // a filter before the search
   for(const std::uint32_t key : touched) touched_cell[key >> 2] = true;
-  // the facets kept in their order; the touched ones that stay are marked by their smaller key
-  std::vector<std::uint32_t> stayed;
+  std::vector<std::uint32_t> were_in; // the touched facets of the given cycle, by their smaller key
   std::size_t kept = 0;
-  for(const std::uint32_t key : facets) {
+  result.removed.assign(facets.size(), false);
+  for(std::size_t i = 0; i < facets.size(); ++i) {
+    const std::uint32_t key = facets[i];
     if(touched_cell[key >> 2] && std::binary_search(touched.begin(), touched.end(), key)) {
-      if(!is_member(key)) {
-        ++result.removed_facets;
-        continue;
-      }
-      stayed.push_back((std::min)(key, mirror_key(key)));
+      result.removed[i] = true;
+      were_in.push_back((std::min)(key, mirror_key(key)));
+      continue;
     }
     facets[kept++] = key;
   }
   facets.resize(kept);
-  std::sort(stayed.begin(), stayed.end());
+  std::sort(were_in.begin(), were_in.end());
   std::vector<std::pair<Triangle_order_key_3, std::uint32_t>> added;
   for(const std::uint32_t key : touched) {
-    if(key > mirror_key(key) || !is_member(key) || std::binary_search(stayed.begin(), stayed.end(), key)) continue;
+    if(key > mirror_key(key)) continue; // each facet once
+    const bool was_in = std::binary_search(were_in.begin(), were_in.end(), key), is_in = is_member(key);
+    result.removed_facets += was_in && !is_in;
+    result.added_facets += is_in && !was_in;
+    if(!is_in) continue;
     const Cell* c = cell_of(key);
     Triangle_coordinates_3 t;
     for(int k = 1; k < 4; ++k) {
@@ -184,8 +190,8 @@ void update_cycle(const Handle_index_map<typename Triangulation::Cell>& cells, c
     added.emplace_back(Triangle_order_key_3(t), key);
   }
   std::sort(added.begin(), added.end(), [](const auto& a, const auto& b) { return b.first < a.first; });
-  for(const auto& a : added) facets.push_back(a.second);
-  result.added_facets = added.size();
+  for(const auto& a : added) result.added.push_back(a.second);
+  facets.insert(facets.end(), result.added.begin(), result.added.end());
 }
 
 // Repairs the cycle `facets` (keys `Closed_surface_mesh_3::facet_key()` of either of their
@@ -227,8 +233,9 @@ repair_closed_surface(const Triangulation& dt, const Handle_index_map<typename T
 
 // The surface of the cycle `facets` (see `repair_closed_surface()`), its non-manifold
 // vertices resolved first unless `keep_non_manifold`; `facets` becomes the cycle of the
-// surface. The surface's own twins find the non-manifold vertices, so a
-// manifold cycle costs no more than its surface.
+// surface. The surface's own twins find the non-manifold vertices, so a manifold cycle costs
+// a walk around the vertices more than its surface; after a resolution, the surface reads only
+// the facets added, and pairs the twins anew.
 template <class Triangulation>
 std::unique_ptr<Closed_surface_mesh_3<Triangulation>>
 manifold_closed_surface(const Triangulation& dt, const Handle_index_map<typename Triangulation::Cell>& cells,
@@ -247,10 +254,9 @@ manifold_closed_surface(const Triangulation& dt, const Handle_index_map<typename
   const std::vector<std::uint32_t> suspects = surface->non_manifold_vertices();
   result.surface_seconds = surface_seconds;
   if(suspects.empty()) return surface;
-  surface.reset();
   result = repair_closed_surface(dt, cells, vertices, inside, constraints, suspects, facets);
   result.surface_seconds = surface_seconds;
-  surface.reset(new Surface(std::vector<std::uint32_t>(facets), cells, vertices, inside));
+  surface->replace_facets(result.removed, result.added, cells, vertices, inside);
   return surface;
 }
 

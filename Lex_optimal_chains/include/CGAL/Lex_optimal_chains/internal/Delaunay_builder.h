@@ -53,13 +53,21 @@ std::vector<Point> finite_points(const PointRange& points, const PointMap& point
   return pts;
 }
 
+// Below this number of points the parallel construction costs more than it saves (the
+// start of the threads and the grid of locks): the triangulation is built sequentially (the
+// manual, section "Complexity and Performance", gives the measurements).
+constexpr std::size_t minimum_points_for_parallel_delaunay = 100000;
+
 // Calls `then(dt)` with the Delaunay triangulation of `points` built with `threads` threads
-// (one without TBB). The triangulation is sequential after its construction.
+// (one without TBB, or for fewer than `minimum_points_for_parallel_delaunay` points). The
+// triangulation is sequential after its construction; it does not depend on the number of
+// threads (the Delaunay triangulation of a point set is unique with CGAL's symbolic
+// perturbation).
 template <class Kernel, class Point, class Then>
 void with_delaunay_triangulation(const std::vector<Point>& points, unsigned threads, const Then& then)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  if(threads > 1) {
+  if(threads > 1 && points.size() >= minimum_points_for_parallel_delaunay) {
     using Vb = Triangulation_vertex_base_3<Kernel>;
     using Cb = Delaunay_triangulation_cell_base_3<Kernel>;
     using Tds = Triangulation_data_structure_3<Vb, Cb, Parallel_tag>;
