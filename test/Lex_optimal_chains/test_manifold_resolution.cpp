@@ -10,7 +10,8 @@
 //   same mesh for shuffled input and two threads;
 // - open surfaces of a noisy terrain with two buildings and of CGAL's b9_training.ply: one
 //   disk (one component, Euler characteristic 1, one boundary loop, the imposed polygon when
-//   the skirt is kept), over Q and Z2, where the optimum has non-manifold edges.
+//   the skirt is kept), over Q and Z2, where the optimum has non-manifold edges;
+// - points on integer lattices (exact ties of the order): 2-manifolds.
 //   test_manifold_resolution [CGAL data directory]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -332,6 +333,44 @@ void test_open_surfaces(const std::string& data)
   check_open_disk(b9, "b9_training.ply");
 }
 
+// ---- exact ties: points on integer lattices (a rounded sphere, a stepped terrain) -----------------
+// Many triangles of equal radii: the candidates are compared with the exact order and its
+// symbolic tie-break. Every output is a 2-manifold; the closed ones stay closed.
+void test_lattice_inputs()
+{
+  std::size_t resolved = 0;
+  for(int seed = 0; seed < 4; ++seed) {
+    CGAL::Random r(seed);
+    std::vector<Point> sphere, terrain;
+    while(sphere.size() < 1500) { // radius 12 with radial noise 1, rounded
+      const double x = r.get_double(-1, 1), y = r.get_double(-1, 1), z = r.get_double(-1, 1);
+      const double l = std::sqrt(x * x + y * y + z * z), s = 12 + r.get_double(-1, 1);
+      if(l > 1e-3) sphere.emplace_back(std::round(x / l * s), std::round(y / l * s), std::round(z / l * s));
+    }
+    for(int i = 0; i < 1500; ++i) { // a block 6 high on a 30 x 30 grid, heights jittered by 0 to 3
+      const int x = r.get_int(0, 30), y = r.get_int(0, 30);
+      terrain.emplace_back(x, y, (x > 8 && x < 20 && y > 8 && y < 20 ? 6 : 0) + r.get_int(0, 3));
+    }
+    Mesh closed;
+    const auto rc = CGAL::lex_optimal_closed_surface_reconstruction(sphere, closed,
+                                                                    LOC::parameters::minimum_interior_persistence(1.01));
+    check_manifold_mesh(closed);
+    assert(CGAL::is_closed(closed) && rc.non_manifold_vertices == 0);
+    resolved += rc.resolved_non_manifold_vertices;
+    const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(terrain)};
+    for(const auto field : {LOC::Coefficient_field::Q, LOC::Coefficient_field::Z2}) {
+      Mesh open;
+      const auto ro = CGAL::lex_optimal_open_surface_reconstruction(terrain, boundary, open,
+                                                                    LOC::parameters::coefficient_field(field));
+      check_manifold_mesh(open);
+      assert(ro.non_manifold_vertices == 0 && ro.non_manifold_edges == 0);
+      resolved += ro.resolved_non_manifold_vertices;
+    }
+  }
+  std::cout << "lattice inputs: " << resolved << " non-manifold vertices resolved, every output a 2-manifold\n";
+  assert(resolved > 0);
+}
+
 int main(int argc, char** argv)
 {
   std::cout << std::unitbuf;
@@ -339,6 +378,7 @@ int main(int argc, char** argv)
   test_detection_on_unions_of_cells();
   test_closed_surfaces(data);
   test_open_surfaces(data);
+  test_lattice_inputs();
   if(data.empty()) std::cout << "no data directory given: the checks on CGAL's scans are skipped\n";
   std::cout << "all manifold resolution checks passed\n";
   return 0;

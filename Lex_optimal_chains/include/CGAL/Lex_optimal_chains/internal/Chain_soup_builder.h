@@ -88,11 +88,16 @@ public:
   {
     if(removals_.empty()) return;
     std::sort(removals_.begin(), removals_.end());
+    std::vector<bool> on_removed(dense_.size(), false); // a filter before the search
+    for(const auto& t : removals_) on_removed[t[0]] = on_removed[t[1]] = on_removed[t[2]] = true;
     std::size_t kept = 0;
     for(const auto& t : triangles_) {
-      std::array<std::uint32_t, 3> s = t;
-      std::sort(s.begin(), s.end());
-      if(!std::binary_search(removals_.begin(), removals_.end(), s)) triangles_[kept++] = t;
+      if(on_removed[t[0]] && on_removed[t[1]] && on_removed[t[2]]) {
+        std::array<std::uint32_t, 3> s = t;
+        std::sort(s.begin(), s.end());
+        if(std::binary_search(removals_.begin(), removals_.end(), s)) continue;
+      }
+      triangles_[kept++] = t;
     }
     CGAL_assertion(triangles_.size() - kept == removals_.size());
     triangles_.resize(kept);

@@ -49,6 +49,7 @@
 #include <array>
 #include <cstdint>
 #include <iterator>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -329,7 +330,7 @@ private:
       if(delta == 0) continue;
       ++stats.changed_cells;
       chain_.change(star.cells[s], chain_.oriented() ? delta : 1);
-      changed_.insert(std::upper_bound(changed_.begin(), changed_.end(), star.cells[s]), star.cells[s]);
+      changed_.insert(star.cells[s]);
       for(int k = 0; k < 4; ++k) {
         const Vertex_handle w = star.cells[s]->vertex(k);
         if(w != v && !dt_.is_infinite(w)) reached.push_back(w);
@@ -337,11 +338,11 @@ private:
     }
   }
 
-  bool is_changed(const Cell* c) const { return std::binary_search(changed_.begin(), changed_.end(), c); }
+  bool is_changed(const Cell* c) const { return changed_.count(c) != 0; }
 
   const Triangulation& dt_;
   ChainAccess& chain_;
-  std::vector<const Cell*> changed_; // sorted: the cells changed once already
+  std::unordered_set<const Cell*> changed_; // the cells changed once already
 };
 
 } // namespace internal
