@@ -96,6 +96,9 @@ file(READ "${WORK}/kitten_ascii.ply" kitten_ascii_header LIMIT 60)
 if(NOT kitten_header MATCHES "format binary_little_endian" OR NOT rc EQUAL 0 OR NOT kitten_ascii_header MATCHES "format ascii")
   message(FATAL_ERROR "kitten: .ply not binary by default, or not text with --ascii")
 endif()
+# the binary file is read back by CGAL's reader: as many points as the mesh has vertices
+string(JSON kitten_vertices GET "${json}" vertices)
+expect_points(kitten_binary_read_back "${WORK}/kitten.ply" ${kitten_vertices})
 
 # kitten.xyz as OFF and PLY files whose header declares 5,000 of its 5,210 points: CGAL's
 # readers stop after 5,000 and would ignore the rest; lex_reconstruct refuses the file. With
