@@ -52,8 +52,8 @@ band of about the margin's width. The median of the 8 nearest points, tried firs
 the slopes best but lifted the polygon onto trees and roofs at the border of a LiDAR tile,
 where the surface then rose to meet it.
 
-Cost: one pass over the points, each compared with every polygon vertex (0.1 s for 1M points
-and the 64 vertices of the default). A `CGAL::Orthogonal_k_neighbor_search` would first
+Cost: one pass over the points, each compared with every polygon vertex (64 by default).
+A `CGAL::Orthogonal_k_neighbor_search` would first
 build a tree over all the points for these few queries, and its ties would not be broken by
 height.
 

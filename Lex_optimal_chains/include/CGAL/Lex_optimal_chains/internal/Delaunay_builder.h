@@ -36,11 +36,8 @@ std::vector<Point> finite_points(const PointRange& points, const PointMap& point
   // With glibc, freeing a block that had a mapping of its own raises the size from which a
   // block gets one (128 KiB at first, at most 32 MiB): the blocks of the triangulation built
   // next and the arrays of the reconstruction then come from the heap, where the memory freed
-  // by one stage is reused by the next. Reserved, each of them had a fresh mapping, and on
-  // the project's virtual machine fresh mappings cost page faults and, the first time their
-  // memory is read, a few microseconds per page: at 1M points on a torus the order took 2.0 to
-  // 2.3 s instead of 1.5 s and the mesh 2.0 to 2.6 s instead of 1.2 s, for 9 MB less at the
-  // peak (the manual, section "Complexity and Performance").
+  // by one stage is reused by the next, instead of fresh mappings whose pages fault when they
+  // are first touched (the manual, section "Complexity and Performance", gives the times).
   std::vector<Point> pts;
   for(const auto& e : points) {
     const Point& p = get(point_map, e);

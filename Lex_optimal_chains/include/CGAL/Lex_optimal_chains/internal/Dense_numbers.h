@@ -5,12 +5,11 @@
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_DENSE_NUMBERS_H
 
 // Dense numbers 0, 1, ... for a few keys among many indices, in the order of their insertion:
-// the roots of the components of the contraction (865 of the 6.2M cells of 1M points on a
-// torus, 46k of the 31M cells of 5M points), or the facets of a surface met around its
-// non-manifold edges. A Kruskal pass over the sorted facets looks up the components of both
-// cells of every facet; an open-addressing table over the roots stays in cache, where an array
-// over all the cells, or disjoint sets over them, would not (at 5M points, a copy of the roots
-// of all the cells cost 0.5 s, and the pass on disjoint sets over the cells 0.44 s).
+// the roots of the components of the contraction (a few thousandths of the cells), or the
+// facets of a surface met around its non-manifold edges. A Kruskal pass over the sorted facets
+// looks up the components of both cells of every facet; an open-addressing table over the
+// roots stays in cache, where an array over all the cells, or disjoint sets over them, would
+// not.
 
 #include <CGAL/assertions.h>
 
