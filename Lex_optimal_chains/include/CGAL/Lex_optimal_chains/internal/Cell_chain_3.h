@@ -5,16 +5,16 @@
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CELL_CHAIN_3_H
 
 // A 2-chain of a 3D triangulation stored on the cells: one byte per cell, two bits per facet
-// holding the coefficient of the facet oriented out of the cell (0, 1, -1, or "multiple",
-// whose value is kept aside). Both cells of a facet hold it (over Q with opposite signs). It
-// is the chain as Manifold_chain_repair_3 reads and changes it (the `ChainAccess` there).
+// holding the coefficient of the facet oriented out of the cell (0, 1, -1, or "multiple":
+// another value, which the repair leaves alone). Both cells of a facet hold it (over Q with
+// opposite signs). It is the chain as Manifold_chain_repair_3 reads and changes it (the
+// `ChainAccess` there).
 
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 
 #include <CGAL/assertions.h>
 
 #include <cstdint>
-#include <map>
 #include <vector>
 
 namespace CGAL {
@@ -46,7 +46,6 @@ public:
     } else {
       set(c, f.second, multiple);
       set(n, j, multiple);
-      multiples_[key(c, f.second)] = k;
     }
   }
 
@@ -76,31 +75,8 @@ public:
     }
   }
 
-  // Calls `emit(facet, k)` once for every facet of the chain, with its coefficient k > 0 out
-  // of the cell that names it (over Z2, the cell of smaller position).
-  template <class Emit>
-  void for_each_facet(const Emit& emit) const
-  {
-    for(std::uint32_t p = 0; p < codes_.size(); ++p) {
-      if(codes_[p] == 0) continue;
-      const Cell* c = cells_.element(p);
-      const Cell_handle h = dt_.tds().cells().iterator_to(*const_cast<Cell*>(c));
-      for(int i = 0; i < 4; ++i) {
-        const int k = coefficient(c, i);
-        if(k == 1 && (oriented_ || p < cells_.index(&*c->neighbor(i)))) {
-          emit(Facet(h, i), std::int64_t(1));
-        } else if(k == multiple) {
-          const auto it = multiples_.find(key(c, i));
-          if(it != multiples_.end()) emit(Facet(h, i), it->second);
-        }
-      }
-    }
-  }
-
 private:
   static constexpr int multiple = 2;
-
-  std::uint64_t key(const Cell* c, int i) const { return 4 * std::uint64_t(cells_.index(c)) + std::uint64_t(i); }
 
   void set(const Cell* c, int i, int k)
   {
@@ -111,7 +87,6 @@ private:
   const Triangulation& dt_;
   Handle_index_map<Cell> cells_;
   std::vector<std::uint8_t> codes_;
-  std::map<std::uint64_t, std::int64_t> multiples_; // (cell position, index) out of which k > 1
   bool oriented_;
 };
 

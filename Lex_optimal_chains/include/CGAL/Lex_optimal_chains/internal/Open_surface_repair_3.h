@@ -53,27 +53,34 @@ Open_surface_repair_result resolved_open_chain(const Triangulation& dt, bool ori
   const auto suspects = builder.non_manifold_vertices(dt.tds());
   if(suspects.empty()) return result;
 
-  // the facets changed, by their vertices, with a name and whether they were in the chain
-  std::map<std::array<const Vertex*, 3>, std::pair<Facet, bool>> changed;
+  // the facets changed, by their vertices, with a name and their coefficient before (out of
+  // the cell of that name)
+  std::map<std::array<const Vertex*, 3>, std::pair<Facet, int>> changed;
   auto record = [&](const Cell* c, int i) {
     std::array<const Vertex*, 3> v;
     for(int k = 1; k < 4; ++k) v[k - 1] = &*c->vertex((i + k) & 3);
     std::sort(v.begin(), v.end());
     const Facet f(dt.tds().cells().iterator_to(*const_cast<Cell*>(c)), i);
-    changed.emplace(v, std::make_pair(f, chain.coefficient(c, i) != 0));
+    changed.emplace(v, std::make_pair(f, chain.coefficient(c, i)));
   };
   Manifold_chain_repair_3<Triangulation, Cell_chain_3<Triangulation>> repair(dt, chain);
   result.statistics = repair.repair(suspects, record);
+  // the soup gets the facets whose coefficient changed: removed, added, or reversed (its two
+  // cells having changed levels in opposite ways); the removals first, as they go by vertices
   for(const auto& entry : changed) {
     const Facet& f = entry.second.first;
-    const int k = chain.coefficient(&*f.first, f.second);
-    if((k != 0) == entry.second.second) continue;
-    ++result.changed_facets;
-    if(k == 0) builder.remove(f);
-    else if(k == 1) builder.add(f, 1);
-    else builder.add(dt.mirror_facet(f), 1); // -1 out of f's cell: 1 out of the other
+    const int before = entry.second.second, now = chain.coefficient(&*f.first, f.second);
+    if(now != before && before != 0) builder.remove(f);
+    result.changed_facets += (now != 0) != (before != 0);
   }
   builder.apply_removals();
+  for(const auto& entry : changed) {
+    const Facet& f = entry.second.first;
+    const int before = entry.second.second, now = chain.coefficient(&*f.first, f.second);
+    if(now == before) continue;
+    if(now == 1) builder.add(f, 1);
+    else if(now == -1) builder.add(dt.mirror_facet(f), 1); // -1 out of f's cell: 1 out of the other
+  }
   return result;
 }
 
