@@ -328,8 +328,11 @@ lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
   Lex_optimal_chains::internal::Constraint_cells constraints;
   std::vector<std::uint32_t> result =
     Lex_optimal_chains::internal::closed_surface_facets(dt, np, callback, 0.0, report, inside, cells, constraints);
-  double surface_seconds = 0;
-  Lex_optimal_chains::internal::resolved_closed_surface(dt, np, cells, inside, constraints, result, report, surface_seconds);
+  // the surface is made only to find the non-manifold vertices: not with keep_non_manifold
+  if(!choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::keep_non_manifold), false)) {
+    double surface_seconds = 0;
+    Lex_optimal_chains::internal::resolved_closed_surface(dt, np, cells, inside, constraints, result, report, surface_seconds);
+  }
   Lex_optimal_chains::internal::report_progress(callback, 1.0); // before anything is written
   for(const std::uint32_t key : result) {
     const auto cell = dt.tds().cells().iterator_to(*const_cast<typename DT::Cell*>(cells.element(key >> 2)));
