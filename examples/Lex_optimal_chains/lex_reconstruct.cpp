@@ -14,13 +14,13 @@
 // On error: a one-line reason on stderr, exit code 1, and no output file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/read_points.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
+#include <CGAL/Lex_optimal_chains/IO/input_files.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <CLI/CLI.hpp>
@@ -72,175 +72,6 @@ static std::string lower_extension(const std::string& path)
   std::string e = std::filesystem::path(path).extension().string();
   for(char& ch : e) ch = char(std::tolower(static_cast<unsigned char>(ch)));
   return e;
-}
-
-static std::vector<std::vector<Point>> read_polylines(const std::string& path)
-{
-  std::ifstream in(path);
-  if(!in) throw std::invalid_argument("cannot open boundary file '" + path + "'");
-  std::vector<std::vector<Point>> polylines;
-  std::string line;
-  for(int number = 1; std::getline(in, line); ++number) {
-    const std::string where = "line " + std::to_string(number) + " of '" + path + "'";
-    std::istringstream ls(line);
-    std::vector<std::string> tokens;
-    for(std::string t; ls >> t;) tokens.push_back(t);
-    if(tokens.empty()) continue; // blank line
-    char* end = nullptr;
-    const long n = std::strtol(tokens[0].c_str(), &end, 10);
-    if(*end != '\0' || end == tokens[0].c_str())
-      throw std::invalid_argument(where + " does not start with a whole number of points, but '" + tokens[0] + "'");
-    if(n < 0 || n > 100000000) throw std::invalid_argument(where + ": bad number of points " + tokens[0]);
-    if(tokens.size() != std::size_t(1 + 3 * n))
-      throw std::invalid_argument(where + " announces " + tokens[0] + " points (" + std::to_string(3 * n) +
-                                  " coordinates) but has " + std::to_string(tokens.size() - 1) + " coordinates");
-    std::vector<Point> polyline;
-    double c[3];
-    for(long i = 0; i < n; ++i) {
-      for(int k = 0; k < 3; ++k) {
-        const std::string& t = tokens[std::size_t(1 + 3 * i + k)];
-        c[k] = std::strtod(t.c_str(), &end);
-        if(*end != '\0' || end == t.c_str() || !std::isfinite(c[k]))
-          throw std::invalid_argument(where + ": coordinate '" + t + "' of point " + std::to_string(i + 1) +
-                                      " is not a finite number");
-      }
-      polyline.emplace_back(c[0], c[1], c[2]);
-    }
-    polylines.push_back(std::move(polyline));
-  }
-  return polylines;
-}
-
-// The size in bytes of a binary PLY file's data, from the element counts and property types
-// of its header, when every property is a scalar (with a list property the size depends on
-// the data) and the counts are below 2^48 bytes' worth: 0 otherwise.
-static unsigned long long binary_ply_data_size(const std::vector<std::pair<unsigned long long, std::vector<std::string>>>& elements)
-{
-  unsigned long long total = 0;
-  for(const auto& [count, properties] : elements) {
-    unsigned long long record = 0;
-    for(const std::string& type : properties) {
-      unsigned long long size = 0;
-      if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") size = 1;
-      else if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") size = 2;
-      else if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32") size = 4;
-      else if(type == "double" || type == "float64") size = 8;
-      else return 0; // a list, or a type this check does not know
-      record += size;
-    }
-    // a count too large for the file is left to CGAL's reader (which then fails), not wrapped around
-    if(record != 0 && count > (1ull << 48) / record) return 0;
-    total += count * record;
-  }
-  return total;
-}
-
-// CGAL's readers stop after the number of points that an OFF or PLY header declares: a header
-// that declares fewer than the file holds would drop points silently. For ASCII files (one
-// record per line) whose points come last (an OFF file without faces, a PLY file whose last
-// element is the vertices) the data lines are counted against the header; for binary PLY
-// files whose properties are all scalars, the size of the data is compared with the size the
-// header gives. Binary PLY files with list properties (faces), binary OFF files, and ASCII files
-// with faces after the points (where an extra line may be an extra face) are not checked.
-static void check_declared_counts(const std::string& input, const std::string& ext)
-{
-  std::ifstream in(input, std::ios::binary);
-  std::string line;
-  auto next_line = [&](bool skip_comments) {
-    while(std::getline(in, line)) {
-      const auto first = line.find_first_not_of(" \t\r");
-      if(first == std::string::npos) continue;
-      if(skip_comments && line[first] == '#') continue;
-      return true;
-    }
-    return false;
-  };
-  unsigned long long declared = 0; // records: points (OFF), elements (PLY)
-  std::string what, last_element;
-  if(ext == ".off") {
-    if(!next_line(true)) return;
-    std::istringstream header(line);
-    std::string keyword;
-    header >> keyword;
-    if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return; // CGAL decides
-    std::string rest;
-    std::getline(header, rest);
-    if(rest.find("BINARY") != std::string::npos) return;
-    if(rest.find_first_not_of(" \t\r") == std::string::npos) { if(!next_line(true)) return; rest = line; }
-    if(keyword.find("ST") != std::string::npos || keyword.find("4") != std::string::npos || keyword.find("n") != std::string::npos)
-      return; // dimension or texture variants: left to CGAL
-    std::istringstream counts(rest);
-    unsigned long long v = 0, f = 0;
-    if(!(counts >> v >> f)) return;
-    if(f != 0) return;
-    declared = v;
-    what = std::to_string(v) + " points";
-  } else if(ext == ".ply") {
-    if(!next_line(false) || line.rfind("ply", 0) != 0) return;
-    bool binary = false, ended = false;
-    std::vector<std::pair<unsigned long long, std::vector<std::string>>> elements; // count, property types
-    while(next_line(false)) {
-      if(line.rfind("end_header", 0) == 0) { ended = true; break; }
-      std::istringstream words(line);
-      std::string keyword, name;
-      words >> keyword;
-      if(keyword == "format") {
-        std::string format;
-        words >> format;
-        if(format == "binary_little_endian" || format == "binary_big_endian") binary = true;
-        else if(format != "ascii") return;
-      } else if(keyword == "element") {
-        unsigned long long count = 0;
-        if(!(words >> name >> count)) return;
-        declared += count;
-        what += (what.empty() ? "" : ", ") + std::to_string(count) + " " + name;
-        last_element = name;
-        elements.push_back({count, {}});
-      } else if(keyword == "property") {
-        std::string type;
-        if(!(words >> type) || elements.empty()) return;
-        elements.back().second.push_back(type);
-      }
-    }
-    if(binary) {
-      if(!ended) return;
-      const auto data_start = in.tellg(); // after the line "end_header" and its end of line
-      const unsigned long long expected = binary_ply_data_size(elements);
-      if(data_start < 0 || expected == 0) return;
-      const unsigned long long size = std::filesystem::file_size(input);
-      if(size > (unsigned long long)(data_start) + expected)
-        throw std::invalid_argument("input '" + input + "' holds more data than its header declares (" + what + ", " +
-                                    std::to_string(expected) + " bytes, against " +
-                                    std::to_string(size - (unsigned long long)(data_start)) +
-                                    "): the points beyond would be ignored; fix the header");
-      return;
-    }
-    if(last_element != "vertex") return;
-  } else
-    return;
-  unsigned long long records = 0;
-  while(next_line(ext == ".off")) {
-    if(++records > declared)
-      throw std::invalid_argument("input '" + input + "' holds more records than its header declares (" + what +
-                                  "): the points beyond would be ignored; fix the header");
-  }
-}
-
-static std::vector<Point> read_input_points(const std::string& input)
-{
-  const std::string in_ext = lower_extension(input);
-  if(in_ext != ".xyz" && in_ext != ".ply" && in_ext != ".off")
-    throw std::invalid_argument("input '" + input + "' must end in .xyz, .ply or .off");
-  if(!std::filesystem::is_regular_file(input)) throw std::invalid_argument("cannot open input '" + input + "'");
-  std::vector<Point> points;
-  // CGAL's readers print their own diagnostics: keep the one-line reason of this program
-  std::ostringstream reader_messages;
-  std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
-  const bool read = CGAL::IO::read_points(input, std::back_inserter(points));
-  std::cerr.rdbuf(saved);
-  if(!read) throw std::invalid_argument("cannot read points from '" + input + "'");
-  check_declared_counts(input, in_ext);
-  return points;
 }
 
 // components, border loops and genus of the written mesh (sum over the components of
@@ -426,7 +257,7 @@ static int run_closed(const std::string& input, const std::string& output, const
   std::vector<Point> interior, exterior;
   for(const std::string& t : interior_text) interior.push_back(parse_point(t));
   for(const std::string& t : exterior_text) exterior.push_back(parse_point(t));
-  const std::vector<Point> points = read_input_points(input);
+  const std::vector<Point> points = LOC::IO::read_point_file<Point>(input);
   Progress_bar bar;
   Mesh mesh;
   const LOC::Closed_surface_report r = CGAL::lex_optimal_closed_surface_reconstruction(
@@ -465,10 +296,10 @@ static int run_open(const std::string& input, const std::string& output, const s
   Output_file file(output);
   if(coefficients != "z2" && coefficients != "q")
     throw std::invalid_argument("--coefficients must be z2 or q, not '" + coefficients + "'");
-  const std::vector<Point> points = read_input_points(input);
+  const std::vector<Point> points = LOC::IO::read_point_file<Point>(input);
   std::vector<std::vector<Point>> boundary;
   if(auto_boundary) boundary.push_back(LOC::footprint_boundary(points));
-  else boundary = read_polylines(boundary_file);
+  else boundary = LOC::IO::read_polyline_file<Point>(boundary_file);
   // the skirt of the automatic boundary is not part of the terrain
   const bool drop_skirt = drop || (auto_boundary && !keep);
   Progress_bar bar;

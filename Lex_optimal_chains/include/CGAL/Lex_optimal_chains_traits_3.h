@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_TRAITS_3_H
 #define CGAL_LEX_OPTIMAL_CHAINS_TRAITS_3_H
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 
 #include <CGAL/enum.h>

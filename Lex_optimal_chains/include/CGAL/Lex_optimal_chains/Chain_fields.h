@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_CHAIN_FIELDS_H
 #define CGAL_LEX_OPTIMAL_CHAINS_CHAIN_FIELDS_H
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 #include <CGAL/Exact_rational.h>
 
 #include <cstdint>

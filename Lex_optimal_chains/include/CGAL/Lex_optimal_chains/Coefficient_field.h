@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_COEFFICIENT_FIELD_H
 #define CGAL_LEX_OPTIMAL_CHAINS_COEFFICIENT_FIELD_H
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 namespace CGAL {
 namespace Lex_optimal_chains {
 

@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_INPUT_ERROR_H
 #define CGAL_LEX_OPTIMAL_CHAINS_INPUT_ERROR_H
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -32,7 +34,8 @@ enum class Input_error_code
   BOUNDARY_NOT_A_CYCLE,        ///< the given boundary edges do not form a cycle
   BOUNDARY_FAR_FROM_POINTS,    ///< a boundary polyline is farther from the points than their own extent
   INVALID_CHAIN,               ///< a triangle of a given chain is not a facet of the triangulation
-  EMPTY_RESULT                 ///< every triangle of the result was dropped (`drop_boundary_triangles`): the points do not span the boundary
+  EMPTY_RESULT,                ///< every triangle of the result was dropped (`drop_boundary_triangles`): the points do not span the boundary
+  UNREADABLE_FILE              ///< an input file cannot be opened or read, is malformed, or holds more than its header declares
 };
 
 /*!

@@ -7,6 +7,8 @@
 /// \file Simplex_orders.h
 /// Total orders on the simplices of a `Simplicial_complex` whose vertices are points.
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/Simplicial_complex.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>

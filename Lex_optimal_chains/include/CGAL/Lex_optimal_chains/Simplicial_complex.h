@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_SIMPLICIAL_COMPLEX_H
 #define CGAL_LEX_OPTIMAL_CHAINS_SIMPLICIAL_COMPLEX_H
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 
 #include <algorithm>

@@ -8,6 +8,8 @@
 /// Lexicographic optimal chains on arbitrary simplicial complexes by matrix reduction
 /// (thesis sections 4.3 and 4.7).
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 #include <CGAL/Lex_optimal_chains/Chain_fields.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/Simplicial_complex.h>

@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_PARAMETERS_H
 #define CGAL_LEX_OPTIMAL_CHAINS_PARAMETERS_H
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 // Named parameters of this package that CGAL 5.5 does not have. Each `foo(x)` starts a
 // pack and `foo(x, np)` appends to one; all of CGAL's own parameters are re-exported, so
 // `Lex_optimal_chains::parameters::verbose(true)` works as well.

@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_TRIANGULATION_COMPLEX_H
 #define CGAL_LEX_OPTIMAL_CHAINS_TRIANGULATION_COMPLEX_H
 
+#include <CGAL/license/Lex_optimal_chains.h>
+
 #include <CGAL/Lex_optimal_chains/Simplicial_complex.h>
 
 #include <map>

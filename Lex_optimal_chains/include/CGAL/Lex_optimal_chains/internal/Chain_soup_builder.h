@@ -106,7 +106,7 @@ public:
 
   // Copies the points of the vertices that the triangles use, after the last `add()`: the
   // triangulation can then be freed before `finish()`, whose sorts and copies of the soup
-  // would otherwise add to it (at 5M points they made the peak of memory).
+  // would otherwise add to it at the peak of memory.
   void take_points()
   {
     constexpr std::uint32_t unused = std::numeric_limits<std::uint32_t>::max();

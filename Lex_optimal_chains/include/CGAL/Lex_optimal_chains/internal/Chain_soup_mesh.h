@@ -5,8 +5,8 @@
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CHAIN_SOUP_MESH_H
 
 // A triangle soup (the support of a 2-chain) made a valid polygon mesh, with arrays and
-// bucketing only (PMP::orient_polygon_soup() does the same with maps, several times slower on
-// millions of triangles):
+// bucketing only, in time linear in the soup (PMP::orient_polygon_soup() does the same with
+// associative maps):
 // - an edge joins the two triangles that share it if it has exactly two; an edge of three
 //   triangles or more is cut (each triangle gets its own copy);
 // - over Z2 the triangles are oriented by a breadth-first traversal across joined edges; a

@@ -367,7 +367,7 @@ private:
     // non-manifold edges (four or more boundary facets): turn around them through the
     // inside cells. The facet met there has its half-edge on that edge unpaired too, so the
     // table holds only the facets with an unpaired half-edge (a few, not all of them: a
-    // table of all the facets cost 32 MB of fresh pages at 1M points)
+    // table of all the facets would be another array of the size of the surface)
     std::vector<std::uint32_t> unpaired; // positions (in memory order) of these facets
     for(std::uint32_t k = 0; k < nf; ++k)
       if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)

@@ -14,8 +14,8 @@
 // processed, so it always unites the cell with its neighbor; and uniting them in advance
 // changes no later decision (the cell is connected to nothing else before). These unions are
 // the first step of Boruvka's algorithm: on points sampled from a surface they are nearly the
-// whole spanning tree (6,125,665 of its 6,126,529 edges for 1M points on a torus), and only
-// the facets left between different components (18% of them) need to be sorted.
+// whole spanning tree, and only the facets left between different components need to be
+// sorted (the manual, section "Complexity and Performance", gives the proportions).
 //
 // The four facets of a cell are first compared from the six squared edge lengths alone, in
 // double with certified error bounds (`certified_largest_facet()`); on the rare cells where a
@@ -233,12 +233,11 @@ struct Cell_facets_3
 // roundings of s, s^2 and the quotient are far inside the factor 2). When e < 1/4,
 // R_C^2 / c - 1 is within e / (1 - e) + 21u <= (4/3) e + 21u (the products and the quotient
 // add 21u), below 2 (e + 32u), the bound of `approximate_radii_from_edges()`; R_B^2 of a
-// certainly obtuse facet is within 16u. (A review measured, with exact rationals on 7.5M
-// facets, at most 0.087 and 0.044 of the bounds on d and on R_C^2.) The
+// certainly obtuse facet is within 16u. The
 // lengths are kept within [1e-120, 1e120], so that no product leaves the normal range. A
 // facet that could be the largest and whose R_B has no such bound (nearly right, or flat
 // enough for d to lose its sign) leaves the cell undecided. This uses no cross product and
-// few branches: it leaves undecided 5 of the 6.1M cells of 1M points on a torus.
+// few branches, and leaves undecided only cells with a nearly right or nearly flat facet.
 inline int certified_largest_facet(const Coordinates_3 (&point)[4])
 {
   constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;

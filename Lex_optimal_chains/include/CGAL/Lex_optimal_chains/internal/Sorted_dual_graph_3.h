@@ -485,7 +485,7 @@ private:
     int top = 63;
     while(top > 0 && ((lo ^ hi) >> top) == 0) --top; // highest differing bit
     // first digit: 16 bits below the highest differing bit, then 8 bits at a time
-    const int width = 12; // measured best of 8, 12 and 16 on 12M records
+    const int width = 12; // 4096 counters for the first digit: they stay in the L1 cache
     radix_sort_records(records_.data(), records_.data() + records_.size(), (std::max)(top - width + 1, 0),
                        dropped_bits, width);
     if(!progress(0.8))

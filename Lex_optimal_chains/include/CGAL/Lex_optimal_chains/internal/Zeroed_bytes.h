@@ -9,9 +9,8 @@
 // largest facets these are a few thousand among tens of millions of elements. The array is
 // allocated with `calloc`, which takes large blocks from the system as fresh pages that are
 // already zero: the pages that are never written are never touched, so they cost neither
-// memory nor page faults (the 31M cells of 5M points on a terrain: the peak of the open
-// surface fell by 20 MB, from 2,937,628 to 2,917,460 kB). With an
-// allocator that zeroes the block itself, the array just costs what a zeroed vector costs.
+// memory nor page faults. With an allocator that zeroes the block itself, the array just
+// costs what a zeroed vector costs.
 
 #include <cstddef>
 #include <cstdint>

@@ -1,0 +1,122 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_CHAINS_IO_INPUT_FILES_H
+#define CGAL_LEX_OPTIMAL_CHAINS_IO_INPUT_FILES_H
+
+/// \file input_files.h
+/// Reading of point clouds and boundary polylines with the checks that a command-line program
+/// needs: one typed error with a one-line reason, never a file read in part.
+
+#include <CGAL/license/Lex_optimal_chains.h>
+
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/internal/Declared_counts.h>
+
+#include <CGAL/IO/read_points.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace IO {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Reads the points of an XYZ, PLY or OFF file (by its extension, in any case) with CGAL's
+readers, and refuses what they would read in part: CGAL's readers stop after the number of
+points that an OFF or PLY header declares, so a header that declares fewer than the file holds
+would drop points silently. For ASCII files whose points come last (an OFF file without faces,
+a PLY file whose last element is the vertices) the data lines are counted against the header;
+for binary PLY files whose properties are all scalars, the size of the data is compared with
+the size that the header gives. Binary PLY files with list properties, binary OFF files and
+ASCII files with faces after the points are not checked for this. The diagnostics that CGAL's
+readers print to `std::cerr` are kept out of it: the error says what was wrong.
+
+\tparam Point_3 the point type, as for `CGAL::IO::read_points()`
+\throws Input_error with code `UNREADABLE_FILE`: another extension, a file that cannot be
+opened or read, or more data than its header declares.
+*/
+template <class Point_3>
+std::vector<Point_3> read_point_file(const std::string& path)
+{
+  std::string extension = std::filesystem::path(path).extension().string();
+  for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if(extension != ".xyz" && extension != ".ply" && extension != ".off")
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "input '" + path + "' must end in .xyz, .ply or .off");
+  if(!std::filesystem::is_regular_file(path))
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot open input '" + path + "'");
+  std::vector<Point_3> points;
+  std::ostringstream reader_messages;
+  std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
+  const bool read = CGAL::IO::read_points(path, std::back_inserter(points));
+  std::cerr.rdbuf(saved);
+  if(!read) throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot read points from '" + path + "'");
+  internal::check_declared_counts(path, extension);
+  return points;
+}
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Reads boundary polylines in CGAL's polylines text format: one polyline per line,
+`n x1 y1 z1 ... xn yn zn`; blank lines are skipped. Every line is checked: a whole number of
+points that matches the number of coordinates, each a finite number. Whether the polylines
+are closed and simple is checked by the functions that take them.
+
+\tparam Point_3 a point type constructible from three `double`
+\throws Input_error with code `UNREADABLE_FILE`, the message naming the line and the token.
+*/
+template <class Point_3>
+std::vector<std::vector<Point_3>> read_polyline_file(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in) throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot open boundary file '" + path + "'");
+  std::vector<std::vector<Point_3>> polylines;
+  std::string line;
+  for(int number = 1; std::getline(in, line); ++number) {
+    const std::string where = "line " + std::to_string(number) + " of '" + path + "'";
+    std::istringstream ls(line);
+    std::vector<std::string> tokens;
+    for(std::string t; ls >> t;) tokens.push_back(t);
+    if(tokens.empty()) continue; // blank line
+    char* end = nullptr;
+    const long n = std::strtol(tokens[0].c_str(), &end, 10);
+    if(*end != '\0' || end == tokens[0].c_str())
+      throw Input_error(Input_error_code::UNREADABLE_FILE, where + " does not start with a whole number of points, but '" + tokens[0] + "'");
+    if(n < 0 || n > 100000000) throw Input_error(Input_error_code::UNREADABLE_FILE, where + ": bad number of points " + tokens[0]);
+    if(tokens.size() != std::size_t(1 + 3 * n))
+      throw Input_error(Input_error_code::UNREADABLE_FILE, where + " announces " + tokens[0] + " points (" + std::to_string(3 * n) +
+                                  " coordinates) but has " + std::to_string(tokens.size() - 1) + " coordinates");
+    std::vector<Point_3> polyline;
+    double c[3];
+    for(long i = 0; i < n; ++i) {
+      for(int k = 0; k < 3; ++k) {
+        const std::string& t = tokens[std::size_t(1 + 3 * i + k)];
+        c[k] = std::strtod(t.c_str(), &end);
+        if(*end != '\0' || end == t.c_str() || !std::isfinite(c[k]))
+          throw Input_error(Input_error_code::UNREADABLE_FILE, where + ": coordinate '" + t + "' of point " + std::to_string(i + 1) +
+                                      " is not a finite number");
+      }
+      polyline.emplace_back(c[0], c[1], c[2]);
+    }
+    polylines.push_back(std::move(polyline));
+  }
+  return polylines;
+}
+
+} // namespace IO
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_CHAINS_IO_INPUT_FILES_H

@@ -1,0 +1,44 @@
+# The targets of the two header-only packages and the CGAL data they are tested on, shared by
+# the top-level CMakeLists.txt and by each test/<Pkg>/ folder configured on its own
+# (cmake -S test/<Pkg>), as CGAL's test suite configures its test folders.
+include_guard(GLOBAL)
+
+set(URBAN_PACKAGES_ROOT "${CMAKE_CURRENT_LIST_DIR}/.." CACHE INTERNAL "Root of the two packages")
+if(NOT CMAKE_CXX_STANDARD)
+  set(CMAKE_CXX_STANDARD 17)
+  set(CMAKE_CXX_STANDARD_REQUIRED ON)
+endif()
+option(LEX_WITH_TBB "Use TBB for the parallel Delaunay triangulation when found" ON)
+
+find_package(CGAL 5.5 REQUIRED)
+find_package(Eigen3 3.3 QUIET)
+if(TARGET Eigen3::Eigen)
+  include(CGAL_Eigen3_support)
+endif()
+if(LEX_WITH_TBB)
+  find_package(TBB QUIET)
+  include(CGAL_TBB_support)
+endif()
+
+if(NOT TARGET Lex_optimal_chains)
+  add_library(Lex_optimal_chains INTERFACE)
+  target_include_directories(Lex_optimal_chains INTERFACE "${URBAN_PACKAGES_ROOT}/Lex_optimal_chains/include")
+  target_link_libraries(Lex_optimal_chains INTERFACE CGAL::CGAL)
+  if(TARGET CGAL::TBB_support)
+    target_link_libraries(Lex_optimal_chains INTERFACE CGAL::TBB_support)
+  endif()
+endif()
+if(NOT TARGET Polygon_partition_simplification)
+  add_library(Polygon_partition_simplification INTERFACE)
+  target_include_directories(Polygon_partition_simplification INTERFACE
+    "${URBAN_PACKAGES_ROOT}/Polygon_partition_simplification/include")
+  target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::CGAL)
+endif()
+
+# Real data shipped by Debian's libcgal-demo, unpacked in the build tree (never committed).
+set(LEX_CGAL_DATA_ARCHIVE "/usr/share/doc/libcgal-dev/data.tar.gz" CACHE FILEPATH "CGAL data archive")
+set(LEX_CGAL_DATA_DIR "${CMAKE_BINARY_DIR}/cgal-data/data" CACHE PATH "Unpacked CGAL data")
+if(NOT EXISTS "${LEX_CGAL_DATA_DIR}/points_3/kitten.xyz" AND EXISTS "${LEX_CGAL_DATA_ARCHIVE}")
+  message(STATUS "Unpacking ${LEX_CGAL_DATA_ARCHIVE}")
+  file(ARCHIVE_EXTRACT INPUT "${LEX_CGAL_DATA_ARCHIVE}" DESTINATION "${CMAKE_BINARY_DIR}/cgal-data")
+endif()

@@ -1,0 +1,1 @@
+${LEX_CGAL_DATA_DIR}
