@@ -4,6 +4,8 @@
 #ifndef CGAL_KINETIC_PARTITION_2_H
 #define CGAL_KINETIC_PARTITION_2_H
 
+#include <CGAL/license/Polygon_partition_simplification.h>
+
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
@@ -51,8 +53,8 @@ only up to rounding (a straight wall at an angle given in several pieces: its ve
 not exactly on one line in double precision) are first moved onto one line, that of the
 longest of them, with exact constructions: a segment whose two endpoints are within
 `collinearity_distance` of the line of a longer segment is projected onto it. Without this,
-the points of the partition, computed in double from nearly identical lines, made an invalid
-partition in 196 of 200 random scenes with one such wall.
+the points of the partition, computed in double from nearly identical lines, could make it
+invalid (one such wall can be enough).
 
 \tparam SegmentRange a range of `Segment_2` of a CGAL kernel `K`
 \tparam NamedParameters a sequence of named parameters

@@ -4,20 +4,22 @@
 #ifndef CGAL_SIMPLIFY_POLYGON_PARTITION_2_H
 #define CGAL_SIMPLIFY_POLYGON_PARTITION_2_H
 
+#include <CGAL/license/Polygon_partition_simplification.h>
+
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
-#include <CGAL/Polygon_partition_simplification/internal/Line_energy_2.h>
-#include <CGAL/Polygon_partition_simplification/internal/Partition_reductions_2.h>
-#include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Partition_descent_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Simplification_round_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Simplification_settings_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Working_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -181,270 +183,63 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
 {
   namespace PPS = Polygon_partition_simplification;
   using Partition = PPS::Line_partition_2<GeomTraits>;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
-  using PPS::Input_error;
-  using PPS::Input_error_code;
+  using Statistics = PPS::Simplification_statistics;
   const auto clock_start = std::chrono::steady_clock::now();
 
-  const double scale = partition.frame().scale;
-  const double lambda1 = choose_parameter(get_parameter(np, PPS::internal_np::concurrency_weight), 0.5);
-  const double lambda2 = choose_parameter(get_parameter(np, PPS::internal_np::orthogonality_weight), 5.);
-  const double epsilon = choose_parameter(get_parameter(np, PPS::internal_np::collapse_distance), 0.01 * scale) / scale;
-  const double alpha_max = choose_parameter(get_parameter(np, internal_np::maximum_angle), 5.);
-  const double l_min = choose_parameter(get_parameter(np, internal_np::minimum_length), epsilon * scale) / scale;
-  const double d_p = choose_parameter(get_parameter(np, PPS::internal_np::point_merge_distance), 0.01 * epsilon * scale) / scale;
-  const double d_l = choose_parameter(get_parameter(np, PPS::internal_np::line_merge_distance), 1e-2);
-  // by default, the L1 terms move lines by about the same amount whatever their weights
-  const double alpha0 = choose_parameter(get_parameter(np, PPS::internal_np::initial_step),
-                                         std::min(0.02, 2.5e-3 / std::max({lambda1, 0.1 * lambda2, 1e-12})));
-  const double ratio = choose_parameter(get_parameter(np, PPS::internal_np::step_ratio), 0.97);
-  // (below the default initial step of weights above about 1e6 otherwise)
-  const double alpha_min = choose_parameter(get_parameter(np, PPS::internal_np::minimum_step), std::min(1e-9, 0.5 * alpha0));
-  const std::size_t max_iterations =
-    choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(100000));
-  using Callback = std::function<bool(const Partition&, const PPS::Simplification_statistics&)>;
-  Callback callback;
-  if constexpr(!is_default_parameter<NamedParameters, internal_np::callback_t>::value)
-    callback = get_parameter(np, internal_np::callback);
-
-  auto check = [](bool ok, const char* what) {
-    if(!ok) throw Input_error(Input_error_code::INVALID_PARAMETER, what);
-  };
-  check(lambda1 >= 0 && std::isfinite(lambda1), "concurrency_weight must be >= 0");
-  check(lambda2 >= 0 && std::isfinite(lambda2), "orthogonality_weight must be >= 0");
-  check(epsilon > 0 && std::isfinite(epsilon) && std::isnormal(epsilon * epsilon),
-        "collapse_distance must be > 0, with a square that is a normal double in the normalized frame "
-        "(between about 1e-150 and 1e150 times the half-diagonal: it is the unit of the energy)");
-  check(alpha_max >= 0 && alpha_max <= 90, "maximum_angle must be in [0, 90] degrees");
-  check(l_min > 0 && std::isfinite(l_min), "minimum_length must be > 0");
-  check(d_p > 0 && d_l > 0 && std::isfinite(d_p) && std::isfinite(d_l),
-        "point_merge_distance and line_merge_distance must be > 0");
-  check(alpha0 > 0 && alpha0 <= 1, "initial_step must be in (0, 1] (1 is a full Newton step of the fidelity term)");
-  check(ratio > 0 && ratio < 1, "step_ratio must be in (0, 1)");
-  check(alpha_min > 0 && alpha_min < alpha0, "minimum_step must be in (0, initial_step)");
+  // The parameters, checked, in the normalized frame of the partition (where the rounds work).
+  const PPS::internal::Simplification_settings settings =
+    PPS::internal::simplification_settings(np, partition.frame().scale);
+  std::function<bool(const Partition&, const Statistics&)> callback;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::callback_t>::value)
+    callback = parameters::get_parameter(np, internal_np::callback);
+  // Each round turns a valid partition into a valid one: the input must be valid.
   {
     const std::string defect = partition.defect();
     if(!defect.empty())
-      throw Input_error(Input_error_code::NO_CELL, "the partition is not valid: " + defect);
+      throw PPS::Input_error(PPS::Input_error_code::NO_CELL, "the partition is not valid: " + defect);
   }
 
-  PPS::internal::Energy_weights weights;
-  // the energy measured with the collapse distance as unit of length, expressed in the normalized frame
-  weights.concurrency_weight = lambda1 * epsilon;
-  weights.orthogonality_weight = lambda2 * epsilon * epsilon;
-  weights.collapse_distance = epsilon;
-  weights.sin_maximum_angle = std::sin(alpha_max * 3.14159265358979323846 / 180.);
-  weights.minimum_length = l_min;
-  PPS::internal::Reduction_thresholds thresholds;
-  thresholds.point_distance = d_p;
-  thresholds.line_distance = d_l;
-  thresholds.collapse_length = epsilon;
-  thresholds.eta = d_p * d_l * d_l / (5. * (1. + 1.)); // Eq. 3.15 with R = 1
-
-  // working copy
-  PPS::internal::Working_partition w;
-  for(const auto& l : partition.lines())
-  {
-    PPS::internal::Line_state state;
-    state.coefficients = l.coefficients;
-    state.metric = l.metric;
-    state.number_of_segments = l.number_of_segments;
-    state.is_fixed = l.is_fixed;
-    w.lines.push_back(state);
-  }
-  for(const auto& v : partition.vertices())
-    w.vertex_lines.emplace_back(v.lines.begin(), v.lines.end());
-  for(const auto& e : partition.edges())
-    w.edges.push_back({PPS::internal::Index(e.line), PPS::internal::Index(std::min(e.source, e.target)),
-                       PPS::internal::Index(std::max(e.source, e.target))});
-
-  auto to_partition = [&](const PPS::internal::Working_partition& x) {
-    std::vector<typename Partition::Line> lines;
-    for(const auto& l : x.lines) {
-      typename Partition::Line line;
-      line.coefficients = l.coefficients;
-      line.metric = l.metric;
-      line.number_of_segments = l.number_of_segments;
-      line.is_fixed = l.is_fixed;
-      lines.push_back(line);
-    }
-    std::vector<typename Partition::Vertex> vertices;
-    for(const auto& v : x.vertex_lines) vertices.push_back({std::vector<std::size_t>(v.begin(), v.end())});
-    std::vector<typename Partition::Edge> edges;
-    for(const auto& e : x.edges) edges.push_back({e[0], e[1], e[2]});
-    return Partition(partition.frame(), std::move(lines), std::move(vertices), std::move(edges));
-  };
-
-  PPS::Simplification_statistics stats;
+  // The rounds work on a copy in working form; `partition` is replaced at the end only.
+  PPS::internal::Working_partition w = PPS::internal::working_partition(partition);
+  Statistics stats;
   stats.lines_before = partition.number_of_lines();
   stats.points_before = partition.number_of_vertices();
-  // a valid partition is a plane graph: its cells follow from Euler's formula
-  auto number_of_cells = [](const PPS::internal::Working_partition& x) {
-    std::vector<std::array<PPS::internal::Index, 2>> ends;
-    ends.reserve(x.edges.size());
-    for(const auto& e : x.edges) ends.push_back({{e[1], e[2]}});
-    return PPS::internal::number_of_bounded_faces(x.vertex_lines.size(), ends);
-  };
-  stats.cells_before = number_of_cells(w);
+  stats.cells_before = PPS::internal::number_of_cells(w);
+  stats.orthogonal_pairs_before = partition.number_of_orthogonal_pairs();
+  stats.energy_before = PPS::internal::energy_in_collapse_units(w, settings);
   // the `_after` fields and the time, for the partition `x` made from `w`
   auto describe_result = [&](const Partition& x) {
-    stats.energy_after = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights) / (epsilon * epsilon);
+    stats.energy_after = PPS::internal::energy_in_collapse_units(w, settings);
     stats.lines_after = x.number_of_lines();
     stats.points_after = x.number_of_vertices();
-    stats.cells_after = number_of_cells(w);
+    stats.cells_after = PPS::internal::number_of_cells(w);
     stats.orthogonal_pairs_after = x.number_of_orthogonal_pairs();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   };
-  stats.orthogonal_pairs_before = partition.number_of_orthogonal_pairs();
-  stats.energy_before = PPS::internal::energy(w.lines, PPS::internal::energy_terms(w), weights) / (epsilon * epsilon);
 
-  // Algorithm 1. A round is a descent followed by reductions. When the reductions leave an
-  // invalid partition, the lines of the defective edges (and of the points at their ends) get
-  // back the coordinates they had before the descent, and the reductions are redone, until
-  // the partition is valid (at worst, every line back where it was: the partition before the
-  // round, which is valid).
-  bool finished = false;
-  std::vector<bool> changed; // lines the reductions of the previous round changed (none before the first)
-  while(!finished) {
-    const PPS::internal::Working_partition start = w;
-    std::vector<PPS::internal::Vector_3d> moved;
-    {
-      // After the first round, the descent moves the lines the reductions changed and every
-      // line sharing a term of the energy with one of them; the others rest. A line put back
-      // (frozen) is not woken for that reason alone: with the same neighbours its descent would
-      // lead to the same invalid reduction (waking them made 2.5 times more rounds and rejected
-      // attempts on the benchmark).
-      const PPS::internal::Energy_terms terms = PPS::internal::energy_terms(w);
-      std::vector<bool> resting;
-      if(!changed.empty()) {
-        resting.assign(w.lines.size(), true);
-        auto wake = [&](const auto& term) {
-          if(std::any_of(term.begin(), term.end(), [&](PPS::internal::Index l) { return bool(changed[l]); }))
-            for(PPS::internal::Index l : term) resting[l] = false;
-        };
-        for(const auto& t : terms.triplets) wake(t);
-        for(const auto& p : terms.pairs) wake(p);
-        for(PPS::internal::Index r = 0; r < w.lines.size(); ++r) if(changed[r]) resting[r] = false;
-      }
-      PPS::internal::Line_descent descent(w.lines, terms, weights, resting);
-      for(double alpha = alpha0; alpha > alpha_min && stats.iterations < max_iterations &&
-                                 descent.number_of_moving_lines() > 0; alpha *= ratio) {
-        if(!descent.step(alpha)) break;
-        ++stats.iterations;
-      }
-      moved = descent.coefficients();
-    }
-    std::vector<bool> frozen(start.lines.size(), false);
-    PPS::internal::Reduction_counts counts;
-    auto before_reductions = [&](PPS::internal::Working_partition& x) { // moved lines, frozen ones back
-      x = start;
-      for(PPS::internal::Index l = 0; l < x.lines.size(); ++l) {
-        x.lines[l].members.assign(1, l);
-        x.lines[l].is_frozen = frozen[l];
-        if(!frozen[l]) x.lines[l].coefficients = moved[l];
-      }
-    };
-    // The orientation of every edge along its line before the round (the reductions collapse
-    // the edges that reversed), and the edges before the round, which is valid: an edge of the
-    // reduced partition with the same ends (coordinates) crosses none of them.
-    std::vector<signed char> orientations(start.edges.size());
-    PPS::internal::Segment_coordinate_set start_edges(start.edges.size()); // their points are finite
-    {
-      std::vector<std::array<double, 2>> points(start.vertex_lines.size());
-      for(PPS::internal::Index v = 0; v < points.size(); ++v) points[v] = start.point(v);
-      for(std::size_t i = 0; i < start.edges.size(); ++i) {
-        const auto& e = start.edges[i];
-        const std::array<double, 2>& p = points[e[1]];
-        const std::array<double, 2>& q = points[e[2]];
-        orientations[i] = PPS::internal::Partition_reducer::orientation_along(start.lines[e[0]].coefficients, p, q);
-        start_edges.insert(p, q);
-      }
-    }
-    auto may_cross = [&](const std::array<double, 2>& p, const std::array<double, 2>& q) {
-      return !start_edges.contains(p, q);
-    };
-    std::size_t ring = 0; // how far around a defect lines are frozen (grows when freezing stalls)
-    std::vector<std::vector<PPS::internal::Index>> start_line_points; // built when a ring is needed
-    for(;;) {
-      before_reductions(w);
-      PPS::internal::Partition_reducer reducer(w, thresholds);
-      counts = reducer.run(orientations);
-      std::vector<std::size_t> defective;
-      const std::string defect =
-        PPS::internal::partition_defect(PPS::internal::Working_partition_view{w}, &defective, may_cross);
-      if(defect.empty() && reducer.conflicts().empty()) break;
-      ++stats.rejected_rounds;
-      bool progress = false;
-      auto freeze = [&](PPS::internal::Index line) {
-        for(PPS::internal::Index l : w.lines[line].members)
-          if(!frozen[l] && !start.lines[l].is_fixed) { frozen[l] = true; progress = true; }
-      };
-      for(PPS::internal::Index l : reducer.conflicts())
-        if(!frozen[l] && !start.lines[l].is_fixed) { frozen[l] = true; progress = true; }
-      for(std::size_t e : defective) { // the edge's line and the lines through its ends
-        freeze(w.edges[e][0]);
-        for(int end = 1; end <= 2; ++end)
-          for(PPS::internal::Index line : w.vertex_lines[w.edges[e][end]]) freeze(line);
-      }
-      // All these lines frozen already: the defect comes from a change further away (a point
-      // between the ends of the edge removed because another line moved or merged). The lines
-      // within `ring` points of them (before the round) are frozen too, one more ring each time.
-      while(!progress && !defective.empty()) {
-        ++ring;
-        if(start_line_points.empty()) {
-          start_line_points.resize(start.lines.size());
-          for(PPS::internal::Index v = 0; v < start.vertex_lines.size(); ++v)
-            for(PPS::internal::Index l : start.vertex_lines[v]) start_line_points[l].push_back(v);
-        }
-        std::vector<bool> reached(start.lines.size(), false);
-        std::vector<PPS::internal::Index> layer;
-        auto reach = [&](PPS::internal::Index line) {
-          for(PPS::internal::Index l : w.lines[line].members)
-            if(!reached[l]) { reached[l] = true; layer.push_back(l); }
-        };
-        for(std::size_t e : defective) {
-          reach(w.edges[e][0]);
-          for(int end = 1; end <= 2; ++end)
-            for(PPS::internal::Index line : w.vertex_lines[w.edges[e][end]]) reach(line);
-        }
-        bool grew = true;
-        for(std::size_t step = 0; step < ring && grew; ++step) {
-          std::vector<PPS::internal::Index> next;
-          for(PPS::internal::Index l : layer)
-            for(PPS::internal::Index v : start_line_points[l])
-              for(PPS::internal::Index m : start.vertex_lines[v])
-                if(!reached[m]) { reached[m] = true; next.push_back(m); }
-          grew = !next.empty();
-          layer = std::move(next);
-        }
-        for(PPS::internal::Index l = 0; l < start.lines.size(); ++l)
-          if(reached[l] && !frozen[l] && !start.lines[l].is_fixed) { frozen[l] = true; progress = true; }
-        if(!grew) break; // the whole connected part is frozen
-      }
-      if(!progress) { w = start; finished = true; counts = {}; break; }
-    }
-    if(!finished) {
-      PPS::internal::Working_partition before;
-      before_reductions(before);
-      changed = PPS::internal::changed_lines(before, w);
-    }
-    for(auto& l : w.lines) { l.is_frozen = false; l.members.clear(); }
+  // Algorithm 1: rounds (a descent, then the reductions, redone until the partition is valid)
+  // until a round reduces nothing or is undone, the gradient steps run out, or the callback
+  // stops the simplification.
+  std::vector<bool> changed; // lines the previous round changed (none before the first: all move)
+  for(;;) {
+    PPS::internal::Round_reductions round =
+      PPS::internal::simplification_round(w, changed, settings, stats.iterations);
     ++stats.rounds;
-    stats.line_merges += counts.line_merges;
-    stats.point_merges += counts.point_merges;
-    stats.removed_points += counts.removed_points;
-    stats.far_points += counts.far_points;
+    stats.rejected_rounds += round.rejected_attempts;
+    stats.line_merges += round.counts.line_merges;
+    stats.point_merges += round.counts.point_merges;
+    stats.removed_points += round.counts.removed_points;
+    stats.far_points += round.counts.far_points;
     if(callback) { // the statistics so far, the `_after` fields describing the partition passed
-      const Partition current = to_partition(w);
+      const Partition current = PPS::internal::line_partition<GeomTraits>(w, partition.frame());
       describe_result(current);
       if(!callback(current, stats)) break;
     }
-    if(counts.total() == 0 || stats.iterations >= max_iterations) finished = true;
+    if(round.undone || round.counts.total() == 0 || stats.iterations >= settings.maximum_iterations) break;
+    changed = std::move(round.changed_lines);
   }
 
-  partition = to_partition(w);
+  partition = PPS::internal::line_partition<GeomTraits>(w, partition.frame());
   describe_result(partition);
   return stats;
 }

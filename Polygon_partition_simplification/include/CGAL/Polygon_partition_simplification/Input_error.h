@@ -4,6 +4,8 @@
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INPUT_ERROR_H
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INPUT_ERROR_H
 
+#include <CGAL/license/Polygon_partition_simplification.h>
+
 #include <stdexcept>
 #include <string>
 

@@ -4,6 +4,8 @@
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_2_H
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_2_H
 
+#include <CGAL/license/Polygon_partition_simplification.h>
+
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
 

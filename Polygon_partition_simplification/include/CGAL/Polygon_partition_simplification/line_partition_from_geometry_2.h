@@ -4,6 +4,8 @@
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_FROM_GEOMETRY_2_H
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_LINE_PARTITION_FROM_GEOMETRY_2_H
 
+#include <CGAL/license/Polygon_partition_simplification.h>
+
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
@@ -112,9 +114,9 @@ its pieces are not exactly on one line in double precision) are put on one line 
 of the group of the edges it bounds (or to the intersection of two such lines, within 4
 `collinearity_distance` of it), with exact constructions, so that rings keep their shared
 vertices; where it cannot be, the groups of the longest edges are kept and the edges of the
-others keep their own lines. Without this, the points of the
-partition, computed in double from nearly identical lines, made an invalid partition in 51 of
-100 rotated rectangles with a vertex in the middle of two sides.
+others keep their own lines. Without this, the points of the partition, computed in double
+from nearly identical lines, could make it invalid (a rotated rectangle with a vertex in the
+middle of a side can be enough).
 
 \tparam GeomTraits the kernel of the result
 \tparam Arrangement an `Arrangement_2` of segments

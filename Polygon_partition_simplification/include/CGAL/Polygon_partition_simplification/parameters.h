@@ -4,6 +4,8 @@
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETERS_H
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETERS_H
 
+#include <CGAL/license/Polygon_partition_simplification.h>
+
 // Named parameters of this package that CGAL 5.5 does not have. Each `foo(x)` starts a
 // pack and `foo(x, np)` appends to one; CGAL's own parameters are re-exported, so
 // `Polygon_partition_simplification::parameters::maximum_angle(5)` works as well.

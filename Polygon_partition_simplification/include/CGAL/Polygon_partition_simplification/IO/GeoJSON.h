@@ -4,6 +4,8 @@
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_IO_GEOJSON_H
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_IO_GEOJSON_H
 
+#include <CGAL/license/Polygon_partition_simplification.h>
+
 #include <CGAL/Polygon_with_holes_2.h>
 
 #include <algorithm>

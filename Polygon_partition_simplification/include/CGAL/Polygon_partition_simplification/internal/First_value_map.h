@@ -5,8 +5,8 @@
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_FIRST_VALUE_MAP_H
 
 // A map from 64-bit keys to the first 32-bit value inserted with each key: open addressing
-// with linear probing, at most half full, its memory kept by clear(). It replaces a
-// std::unordered_map in a loop of the reductions that made one allocation per key and pass.
+// with linear probing, at most half full, its memory kept by clear(), so that a loop that fills
+// it again at every pass (the reductions) allocates nothing per key.
 
 #include <cstddef>
 #include <cstdint>

@@ -388,8 +388,8 @@ private:
   // The point where ray r meets the line of `segment` (or the rectangle), which is
   // origin + head_parameter * direction, built as the intersection of two lines: one
   // construction in the lazy kernel, whose exact evaluation (by the arrangement of the extents,
-  // at every T-junction) is one step from the exact lines, instead of a chain of a dozen
-  // arithmetic operations, each of which was evaluated and synchronized on its own.
+  // at every T-junction) is one step from the exact lines, rather than a chain of a dozen
+  // arithmetic operations, each evaluated and synchronized on its own.
   Point meeting_point(std::size_t r, std::uint32_t segment) const
   {
     const EK::Line_2& other = segment == box_candidate ? box_[rays_[r].box_side] : lines_[segment];

@@ -223,8 +223,8 @@ public:
   {
     // Whether a term is constant (|det| >= eps) rarely changes from step to step: a branch on
     // it skips the constant terms, and the branch predictor learns the pattern while the
-    // moving lines are few; with many (the steps of 17,641 lines took twice as long per line
-    // as those of 2,441, for the same number of terms per line), a lookup is faster.
+    // moving lines are few; with many, the pattern is too long to be learnt, and a lookup
+    // without a branch is faster.
     return moving_.size() <= 2048 ? step_with<true>(alpha) : step_with<false>(alpha);
   }
 
@@ -265,8 +265,7 @@ private:
 
   // The same sums with or without a branch on the constant terms (adding 0 changes nothing).
   // The sign of an active term by a lookup, not a branch: it changes from step to step in the
-  // kinks of |det| (a branch on it made the descent twice as slow when the compiler did not
-  // inline the step).
+  // kinks of |det|, where a branch on it would often be mispredicted.
   template <bool skip_constant_terms>
   Vector_3d derivative_with(std::size_t m) const
   {

@@ -31,52 +31,19 @@
 #include <CGAL/Polygon_partition_simplification/internal/First_value_map.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_energy_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
-
-#include <boost/container/small_vector.hpp>
+#include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
+#include <CGAL/Polygon_partition_simplification/internal/Working_partition_2.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
-
-using Index = std::uint32_t;
-
-// the lines through a point (two, or a few after points merged): no allocation up to four
-using Point_lines = boost::container::small_vector<Index, 4>;
-
-struct Working_partition
-{
-  std::vector<Line_state> lines;
-  std::vector<Point_lines> vertex_lines; // sorted, distinct
-  std::vector<std::array<Index, 3>> edges;      // line, u < v
-
-  std::array<double, 2> point(Index v) const
-  {
-    return point_of_lines(
-      vertex_lines[v], [this](std::size_t l) -> const Vector_3d& { return lines[l].coefficients; },
-      [this](std::size_t l) { return lines[l].is_fixed; });
-  }
-};
-
-// Working_partition as seen by partition_defect()
-struct Working_partition_view
-{
-  const Working_partition& w;
-  std::size_t number_of_lines() const { return w.lines.size(); }
-  const Vector_3d& coefficients(std::size_t l) const { return w.lines[l].coefficients; }
-  bool is_fixed(std::size_t l) const { return w.lines[l].is_fixed; }
-  std::size_t number_of_vertices() const { return w.vertex_lines.size(); }
-  const Point_lines& vertex_lines(std::size_t v) const { return w.vertex_lines[v]; }
-  std::size_t number_of_edges() const { return w.edges.size(); }
-  std::array<std::size_t, 3> edge(std::size_t e) const { return {{w.edges[e][0], w.edges[e][1], w.edges[e][2]}}; }
-};
 
 struct Reduction_counts
 {
@@ -94,28 +61,6 @@ struct Reduction_thresholds
   double line_distance = 0;  // d_L
   double collapse_length = 0; // epsilon: a reversed edge shorter than this collapses
 };
-
-// The concurrency triplets and orthogonality pairs of the current structure.
-inline Energy_terms energy_terms(const Working_partition& w)
-{
-  Energy_terms terms;
-  for(const auto& e : w.edges) {
-    const Index i = e[0];
-    for(Index j : w.vertex_lines[e[1]]) {
-      if(j == i) continue;
-      for(Index k : w.vertex_lines[e[2]])
-        if(k != i && k != j) terms.triplets.push_back({i, j, k});
-    }
-  }
-  for(const auto& l : w.vertex_lines) {
-    for(std::size_t a = 0; a < l.size(); ++a)
-      for(std::size_t b = a + 1; b < l.size(); ++b) {
-        if(!w.lines[l[a]].is_fixed && !w.lines[l[b]].is_fixed) terms.pairs.push_back({l[a], l[b]});
-        for(std::size_t c = b + 1; c < l.size(); ++c) terms.triplets.push_back({l[a], l[b], l[c]});
-      }
-  }
-  return terms;
-}
 
 class Partition_reducer
 {
@@ -195,7 +140,7 @@ public:
           for(std::size_t b = a + 1; b < l.size(); ++b) {
             const std::uint64_t key = (std::uint64_t(l[a]) << 32) | l[b]; // l[a] < l[b]: not no_key
             const Index first = owner_.insert(key, v); // the first point on these two lines
-            if(first == v || find_vertex(first) == find_vertex(v)) continue;
+            if(first == v || vertex_sets_.same_set(first, v)) continue;
             if(!w_.lines[l[a]].is_still() && !w_.lines[l[b]].is_still() &&
                line_distance(line(l[a]), line(l[b])) < t_.line_distance && unite_lines(l[a], l[b])) {
               ++counts_.line_merges; changed = true; continue;
@@ -263,8 +208,8 @@ private:
     return result;
   }
 
-  Index find_line(Index x) { while(line_parent_[x] != x) x = line_parent_[x] = line_parent_[line_parent_[x]]; return x; }
-  Index find_vertex(Index x) { while(vertex_parent_[x] != x) x = vertex_parent_[x] = vertex_parent_[vertex_parent_[x]]; return x; }
+  Index find_line(Index x) { return line_sets_.find(x); }
+  Index find_vertex(Index x) { return vertex_sets_.find(x); }
 
   // Merges the classes of x and y if every line of one is within `bound` of every line of the
   // other (complete linkage): chains of pairwise close lines, such as the sides of the
@@ -292,8 +237,8 @@ private:
   // Merges the classes of points u and v if all their points are within `bound` of each other
   // (complete linkage: a ring of short edges does not collapse into one point at once), unless
   // every line through u and v is kept still: around a defect of a previous attempt, the
-  // partition must be that of the start of the round (merging the ends of a short edge there
-  // left a defect that no freezing could remove, and the whole simplification stopped).
+  // partition must stay that of the start of the round, since a merge of the ends of a short
+  // edge there can leave a defect that no freezing removes.
   bool merge_close_points(Index u, Index v, const std::vector<std::array<double, 2>>& points, double bound)
   {
     auto still = [&](Index x) {
@@ -319,31 +264,18 @@ private:
     return true;
   }
 
-  bool unite_lines(Index x, Index y)
-  {
-    x = find_line(x); y = find_line(y);
-    if(x == y) return false;
-    if(y < x) std::swap(x, y);
-    line_parent_[y] = x;
-    return true;
-  }
-  bool unite_vertices(Index x, Index y)
-  {
-    x = find_vertex(x); y = find_vertex(y);
-    if(x == y) return false;
-    if(y < x) std::swap(x, y);
-    vertex_parent_[y] = x;
-    return true;
-  }
+  // The classes of lines and of points to merge keep their smallest member as representative:
+  // apply() numbers the merged lines and points in the order of their representatives and
+  // starts a merged line from the state of its representative.
+  bool unite_lines(Index x, Index y) { return line_sets_.unite_at_smallest(x, y); }
+  bool unite_vertices(Index x, Index y) { return vertex_sets_.unite_at_smallest(x, y); }
 
   void reset()
   {
-    line_parent_.resize(w_.lines.size());
-    std::iota(line_parent_.begin(), line_parent_.end(), Index(0));
+    line_sets_.reset(w_.lines.size());
     class_members_.assign(w_.lines.size(), {});
     vertex_members_.assign(w_.vertex_lines.size(), {});
-    vertex_parent_.resize(w_.vertex_lines.size());
-    std::iota(vertex_parent_.begin(), vertex_parent_.end(), Index(0));
+    vertex_sets_.reset(w_.vertex_lines.size());
   }
 
   // argmin of L^T M L over a^2 + b^2 = 1: with c = -(M_ac a + M_bc b) / M_cc, the smallest
@@ -471,13 +403,10 @@ private:
     std::vector<std::pair<Index, Index>> through;
     std::vector<std::pair<double, Index>> sorted;
     // A point left on a single line lies on that line only, so the groups of such points
-    // joined by edges are found with one union-find over all points, line after line.
-    std::vector<Index> group(nv);
-    std::iota(group.begin(), group.end(), Index(0));
-    auto find = [&](Index x) {
-      while(group[x] != x) x = group[x] = group[group[x]];
-      return x;
-    };
+    // joined by edges are found with one union-find over all points, line after line. A group
+    // is named by its representative, which orders the groups of a line: the representative is
+    // that of the second point of the edge that joined two groups (unite_into()).
+    Union_find<Index> groups(nv);
     for(Index l = 0; l < nl; ++l) {
       const std::size_t first_of_line = edges.size();
       // Intervals with real points at both ends. A single-line point has no coordinates of its
@@ -494,9 +423,9 @@ private:
           intervals.push_back({std::min(a, b), std::max(a, b)});
         } else if(ru) through.push_back({v, u});
         else if(rv) through.push_back({u, v});
-        else group[find(u)] = find(v);
+        else groups.unite_into(u, v);
       }
-      for(auto& t : through) t.first = find(t.first);
+      for(auto& t : through) t.first = groups.find(t.first);
       std::sort(through.begin(), through.end());
       for(std::size_t i = 0, j; i < through.size(); i = j) {
         double lo = parameter(l, through[i].second), hi = lo;
@@ -579,7 +508,7 @@ private:
   Reduction_thresholds t_;
   First_value_map owner_; // the first point met on each pair of lines (key: the two lines)
   Reduction_counts counts_;
-  std::vector<Index> line_parent_, vertex_parent_;
+  Union_find<Index> line_sets_, vertex_sets_; // the classes of lines and of points merged in a pass
   std::vector<Index> conflicts_;
   std::vector<std::vector<Index>> class_members_;  // lines of each class (at its root) in a pass
   std::vector<std::vector<Index>> vertex_members_; // points of each class (at its root) in a pass

@@ -28,6 +28,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/First_value_map.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -293,9 +294,9 @@ public:
     : points_(points), edges_(edges), on_outer_boundary_(std::move(on_outer_boundary)), part_(points.size()),
       odd_(points.size(), false)
   {
-    for(std::size_t x = 0; x < part_.size(); ++x) part_[x] = x;
-    for(const auto& e : edges) part_[find(e[0])] = find(e[1]);
-    for(std::size_t x = 0; x < part_.size(); ++x) part_[x] = find(x);
+    Union_find<std::size_t> parts(points.size());
+    for(const auto& e : edges) parts.unite(e[0], e[1]);
+    for(std::size_t x = 0; x < part_.size(); ++x) part_[x] = parts.find(x);
   }
 
   bool lies_in_another_part(std::size_t v)
@@ -324,16 +325,10 @@ public:
   }
 
 private:
-  std::size_t find(std::size_t x)
-  {
-    while(part_[x] != x) x = part_[x] = part_[part_[x]];
-    return x;
-  }
-
   const std::vector<std::array<double, 2>>& points_;
   const std::vector<std::array<std::size_t, 2>>& edges_;
   std::vector<bool> on_outer_boundary_;
-  std::vector<std::size_t> part_;
+  std::vector<std::size_t> part_; // per point, the representative of its connected part
   std::vector<bool> odd_;
   std::vector<std::size_t> touched_;
 };
@@ -464,18 +459,9 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
 template <class Edges>
 std::size_t number_of_bounded_faces(std::size_t number_of_points, const Edges& edges)
 {
-  std::vector<std::size_t> parent(number_of_points);
-  for(std::size_t v = 0; v < number_of_points; ++v) parent[v] = v;
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::size_t parts = number_of_points;
-  for(const auto& e : edges) {
-    const std::size_t a = find(e[0]), b = find(e[1]);
-    if(a != b) { parent[a] = b; --parts; }
-  }
-  return edges.size() + parts - number_of_points;
+  Union_find<std::size_t> parts(number_of_points);
+  for(const auto& e : edges) parts.unite(e[0], e[1]);
+  return edges.size() + parts.number_of_sets() - number_of_points;
 }
 
 // The first defect of a partition (empty if it is valid); with `defective`, the edges of all

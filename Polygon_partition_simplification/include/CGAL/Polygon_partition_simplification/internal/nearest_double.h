@@ -8,7 +8,8 @@
 // rounds as its number type does (GMP's mpq truncates, Boost's rational does not), and
 // `CGAL::to_double()` of a lazy number returns the middle of its interval, which depends on
 // whether its exact value was needed before. What the package computes in double from exact
-// values must depend on neither: the same input gave different simplifications in two builds.
+// values must depend on neither, so that the same input gives the same simplification in every
+// build.
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 

@@ -8,11 +8,11 @@
 // vertices are not exactly on one line in double precision, which is the rule for a wall at an
 // angle) have supporting lines that differ by a tiny angle. The kinetic partition of such
 // segments is exact, but its points are then computed in double from nearly identical lines,
-// where the intersection of two lines is ill-conditioned: in 196 of 200 random scenes with
-// one such wall in 6 pieces, the partition had crossing edges, points at infinity or a point
-// with the same line twice. Such segments are moved onto one exact line first: the line of the
-// longest segment of the group, on which the endpoints of the others are projected with exact
-// constructions. Then they share one line, as exactly collinear segments do.
+// where the intersection of two lines is ill-conditioned: the partition can then have crossing
+// edges, points at infinity or a point with the same line twice. Such segments are moved onto
+// one exact line first: the line of the longest segment of the group, on which the endpoints
+// of the others are projected with exact constructions. Then they share one line, as exactly
+// collinear segments do.
 //
 // A segment joins the group of a longer one when both its endpoints are within `distance` of
 // that segment's line. Segments are taken by decreasing length (ties by their sorted
@@ -73,8 +73,9 @@ inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<do
   // The references are found by angle and by offset: a segment whose endpoints q are within
   // `distance` of a line at an angle within `window` of its own has offsets (signed distances of
   // the lines from a center, along the normal of the angle) that differ by at most
-  // distance + window |q - center|. By angle alone, a street grid at an angle (thousands of
-  // parallel lines) made the search quadratic. Bins of angles, in each the references by offset.
+  // distance + window |q - center|. By angle alone, the search would be quadratic for a street
+  // grid at an angle (thousands of parallel lines). Bins of angles, in each the references by
+  // offset.
   double center[2] = {0, 0};
   for(const auto& c : input) { center[0] += (c[0] + c[2]) / (2. * double(n)); center[1] += (c[1] + c[3]) / (2. * double(n)); }
   auto offset = [&](double a, double x, double y) { return -std::sin(a) * (x - center[0]) + std::cos(a) * (y - center[1]); };
