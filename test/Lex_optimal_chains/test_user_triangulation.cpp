@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // The stages of the package on triangulations that the user built: custom vertex and cell
-// bases (with info), Fast_location, the parallel tag. Each mesh made on a user's triangulation must
+// bases (with info), Fast_location, the parallel tag, the package's traits class as geometric
+// traits. Each mesh made on a user's triangulation must
 // be the one made from the points (same oriented triangles), the facets of the raw functions
 // must be the faces of the mesh, the triangulation and its vertex information must be left
 // as they were, and an insertion of a boundary that fails must give the triangulation back
@@ -18,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Lex_optimal_chains_traits_3.h>
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
@@ -43,6 +45,7 @@ using Info_cb = CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay
 using Info_tds = CGAL::Triangulation_data_structure_3<Info_vb, Info_cb>;
 using Info_DT = CGAL::Delaunay_triangulation_3<K, Info_tds>;
 using Hierarchy_DT = CGAL::Delaunay_triangulation_3<K, CGAL::Default, CGAL::Fast_location>;
+using Traits_DT = CGAL::Delaunay_triangulation_3<CGAL::Lex_optimal_chains_traits_3<K>>;
 #ifdef CGAL_LINKED_WITH_TBB
 using Parallel_tds = CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
                                                           CGAL::Delaunay_triangulation_cell_base_3<K>, CGAL::Parallel_tag>;
@@ -182,6 +185,13 @@ void test_closed_surfaces(CGAL::Random& rng)
   test_closed<CGAL::Delaunay_triangulation_3<K>>("Delaunay_triangulation_3<K>", points, expected);
   test_closed<Info_DT>("vertex and cell bases with info", points, expected);
   test_closed<Hierarchy_DT>("Fast_location", points, expected);
+  test_closed<Traits_DT>("Lex_optimal_chains_traits_3 as geometric traits", points, expected);
+  // the reconstruction with either traits
+  Mesh with_kernel, with_traits;
+  CGAL::lex_optimal_closed_surface_reconstruction(points, with_kernel, CGAL::parameters::geom_traits(K()));
+  CGAL::lex_optimal_closed_surface_reconstruction(points, with_traits,
+                                                  CGAL::parameters::geom_traits(CGAL::Lex_optimal_chains_traits_3<K>()));
+  assert(faces_of(with_kernel) == expected && faces_of(with_traits) == expected);
 #ifdef CGAL_LINKED_WITH_TBB
   test_closed<Parallel_DT>("Parallel_tag", points, expected);
 #endif
@@ -257,6 +267,10 @@ void test_open_surfaces(CGAL::Random& rng)
   test_open<CGAL::Delaunay_triangulation_3<K>>("Delaunay_triangulation_3<K>", points, footprint, expected);
   test_open<Info_DT>("vertex and cell bases with info", points, footprint, expected);
   test_open<Hierarchy_DT>("Fast_location", points, footprint, expected);
+  test_open<Traits_DT>("Lex_optimal_chains_traits_3 as geometric traits", points, footprint, expected);
+  Mesh with_kernel;
+  CGAL::lex_optimal_open_surface_reconstruction(points, footprint, with_kernel, CGAL::parameters::geom_traits(K()));
+  assert(faces_of(with_kernel) == expected);
 #ifdef CGAL_LINKED_WITH_TBB
   test_open<Parallel_DT>("Parallel_tag", points, footprint, expected);
 #endif

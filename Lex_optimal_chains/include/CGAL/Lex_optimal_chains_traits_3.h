@@ -6,18 +6,20 @@
 
 #include <CGAL/license/Lex_optimal_chains.h>
 
+#include <CGAL/Lex_optimal_chains/internal/Geom_traits_check.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 
 #include <CGAL/enum.h>
-
-#include <type_traits>
 
 namespace CGAL {
 
 /*!
 \ingroup PkgLexOptimalChainsRef
 
-Geometric traits of the package: the total order on triangles of Lemma 4.14 of the thesis.
+A model of `LexOptimalChainsTraits_3`: the kernel `K`, which gives the predicates of the
+Delaunay triangulation, with the total order on triangles of Lemma 4.14 of the thesis, the
+order that the algorithms of the package use (they evaluate it with the same exact
+arithmetic), for the user's own code.
 
 A triangle \f$\sigma_1\f$ comes before \f$\sigma_2\f$ if
 - the radius \f$R_B\f$ of its smallest enclosing ball is smaller, or
@@ -33,13 +35,16 @@ All comparisons are exact: squared radii are compared as fractions of polynomial
 coordinates, first with interval arithmetic and, when the intervals do not decide, exactly
 (cross products of the fractions, in CGAL's exact ring type for doubles, `Mpzf` where available).
 
-\tparam K a CGAL kernel whose `FT` is `double` (e.g. `Exact_predicates_inexact_constructions_kernel`)
+\tparam K a CGAL kernel whose `FT` is `double`, with exact predicates (e.g.
+`Exact_predicates_inexact_constructions_kernel`); another kernel is refused at compile time
+with a message that says why.
+
+\cgalModels `LexOptimalChainsTraits_3`
 */
 template <class K>
-class Lex_optimal_chains_traits_3
+class Lex_optimal_chains_traits_3 : public K
 {
-  static_assert(std::is_same<typename K::FT, double>::value,
-                "Lex_optimal_chains_traits_3 needs a kernel with double coordinates (e.g. Epick)");
+  static_assert(Lex_optimal_chains::internal::Has_exact_predicates_and_double_coordinates<K>::value, "");
 
 public:
   /// The kernel.
@@ -66,6 +71,9 @@ public:
       return {{{{p.x(), p.y(), p.z()}}, {{q.x(), q.y(), q.z()}}, {{r.x(), r.y(), r.z()}}}};
     }
   };
+
+  /// builds the traits from a kernel object.
+  Lex_optimal_chains_traits_3(const K& k = K()) : K(k) {}
 
   /// The comparison functor.
   Compare_triangle_order_3 compare_triangle_order_3_object() const { return Compare_triangle_order_3(); }

@@ -12,6 +12,7 @@
 #include <CGAL/Lex_optimal_chains/Closed_surface_report.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Geom_traits_check.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_pipeline_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
@@ -94,8 +95,7 @@ lex_optimal_closed_surface(const DT& dt, OutputIterator facets,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static_assert(std::is_same<typename DT::Geom_traits::FT, double>::value,
-                "lex_optimal_closed_surface needs a triangulation with double coordinates (e.g. Epick)");
+  static_assert(Lex_optimal_chains::internal::Has_double_coordinates<typename DT::Geom_traits>::value, "");
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   Lex_optimal_chains::Closed_surface_report report;
@@ -145,8 +145,7 @@ lex_optimal_closed_surface_mesh(const DT& dt, PolygonMesh& mesh, const NamedPara
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  static_assert(std::is_same<typename DT::Geom_traits::FT, double>::value,
-                "lex_optimal_closed_surface_mesh needs a triangulation with double coordinates (e.g. Epick)");
+  static_assert(Lex_optimal_chains::internal::Has_double_coordinates<typename DT::Geom_traits>::value, "");
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   Lex_optimal_chains::Closed_surface_report report;
@@ -176,8 +175,13 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
 \cgalNamedParamsBegin
   \cgalParamNBegin{point_map}
     \cgalParamDescription{a property map giving the point of an element of `points`}
-    \cgalParamType{a model of `ReadablePropertyMap` with value type a `Point_3` of an `Epick`-like kernel}
+    \cgalParamType{a model of `ReadablePropertyMap` with value type a `Point_3` with `double` coordinates}
     \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{the geometric traits with which the Delaunay triangulation is built}
+    \cgalParamType{a model of `LexOptimalChainsTraits_3` whose `Point_3` is the point type}
+    \cgalParamDefault{the kernel of the points (`CGAL::Kernel_traits`)}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower); the result does not depend on it}
@@ -199,9 +203,10 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
   using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
   using Point = typename boost::property_traits<Point_map>::value_type;
   using Kernel = typename Kernel_traits<Point>::Kernel;
-  static_assert(std::is_same<typename Kernel::FT, double>::value && bool(Kernel::Has_filtered_predicates),
-                "lex_optimal_closed_surface_reconstruction needs points of a kernel with double coordinates and exact (filtered) "
-                "predicates, such as Epick: the Delaunay triangulation is built with its predicates");
+  using Geom_traits = typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::geom_traits_t, NamedParameters, Kernel>::type;
+  static_assert(Lex_optimal_chains::internal::Has_exact_predicates_and_double_coordinates<Geom_traits>::value, "");
+  const Geom_traits traits = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
   using Input_error = Lex_optimal_chains::Input_error;
   using Code = Lex_optimal_chains::Input_error_code;
 
@@ -215,7 +220,7 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
   std::vector<Point> pts = Lex_optimal_chains::internal::finite_points<Point>(points, point_map);
   report.number_of_input_points = pts.size();
   if(callback && !callback(0.0)) throw Input_error(Code::CANCELLED, "cancelled by the callback");
-  Lex_optimal_chains::internal::with_delaunay_triangulation<Kernel>(pts, threads, [&](auto& dt) {
+  Lex_optimal_chains::internal::with_delaunay_triangulation(pts, traits, threads, [&](auto& dt) {
     std::vector<Point>().swap(pts); // freed as soon as possible: peak memory
     report.delaunay_seconds = watch.lap();
     Lex_optimal_chains::internal::add_closed_surface_mesh(dt, mesh, np, callback, 0.35, report, [&dt] { dt.clear(); });

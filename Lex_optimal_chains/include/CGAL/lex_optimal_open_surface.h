@@ -14,6 +14,7 @@
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/Open_surface_report.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Geom_traits_check.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Imposed_boundary_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Open_surface_pipeline_3.h>
@@ -71,8 +72,13 @@ disjoint, each edge oriented from a vertex to the next
 \cgalNamedParamsBegin
   \cgalParamNBegin{point_map}
     \cgalParamDescription{a property map giving the point of an element of `points`}
-    \cgalParamType{a model of `ReadablePropertyMap` with value type a `Point_3` of an `Epick`-like kernel}
+    \cgalParamType{a model of `ReadablePropertyMap` with value type a `Point_3` with `double` coordinates}
     \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{the geometric traits with which the Delaunay triangulation is built}
+    \cgalParamType{a model of `LexOptimalChainsTraits_3` whose `Point_3` is the point type}
+    \cgalParamDefault{the kernel of the points (`CGAL::Kernel_traits`)}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
     \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower); the result does not depend on it}
@@ -115,9 +121,10 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
   using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
   using Point = typename boost::property_traits<Point_map>::value_type;
   using Kernel = typename Kernel_traits<Point>::Kernel;
-  static_assert(std::is_same<typename Kernel::FT, double>::value && bool(Kernel::Has_filtered_predicates),
-                "lex_optimal_open_surface_reconstruction needs points of a kernel with double coordinates and exact (filtered) "
-                "predicates, such as Epick: the Delaunay triangulation is built with its predicates");
+  using Geom_traits = typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::geom_traits_t, NamedParameters, Kernel>::type;
+  static_assert(Lex_optimal_chains::internal::Has_exact_predicates_and_double_coordinates<Geom_traits>::value, "");
+  const Geom_traits traits = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
 
   const Point_map point_map = choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map));
   const std::function<bool(double)> callback =
@@ -136,7 +143,7 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
 
   std::vector<Point> soup_points;
   std::vector<std::array<std::uint32_t, 3>> soup;
-  LOC::internal::with_delaunay_triangulation<Kernel>(pts, threads, [&](auto& dt) {
+  LOC::internal::with_delaunay_triangulation(pts, traits, threads, [&](auto& dt) {
     using Triangulation = std::remove_reference_t<decltype(dt)>;
     std::vector<Point>().swap(pts); // freed as soon as possible: peak memory
     std::set<typename Triangulation::Vertex_handle> boundary_only;
@@ -196,8 +203,7 @@ lex_optimal_open_surface_mesh(const DT& dt, const EdgeRange& cycle, PolygonMesh&
                               const NamedParameters& np = parameters::default_values())
 {
   namespace LOC = Lex_optimal_chains;
-  static_assert(std::is_same<typename DT::Geom_traits::FT, double>::value,
-                "lex_optimal_open_surface_mesh needs a triangulation with double coordinates (e.g. Epick)");
+  static_assert(Lex_optimal_chains::internal::Has_double_coordinates<typename DT::Geom_traits>::value, "");
   const std::function<bool(double)> callback = parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   LOC::Open_surface_report report;

@@ -10,6 +10,7 @@
 #include <CGAL/license/Lex_optimal_chains.h>
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/internal/Geom_traits_check.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
 #include <CGAL/Lex_optimal_chains/internal/Imposed_boundary_3.h>
 
@@ -86,8 +87,7 @@ template <class DT, class PolylineRange, class NamedParameters = parameters::Def
 Inserted_boundary<DT> insert_boundary(DT& dt, const PolylineRange& polylines,
                                       const NamedParameters& np = parameters::default_values())
 {
-  static_assert(std::is_same<typename DT::Geom_traits::FT, double>::value,
-                "insert_boundary needs a triangulation with double coordinates (e.g. Epick)");
+  static_assert(internal::Has_double_coordinates<typename DT::Geom_traits>::value, "");
   using Point = typename DT::Point;
   if(dt.dimension() < 3)
     throw Input_error(Input_error_code::DEGENERATE_POINT_SET,

@@ -55,31 +55,33 @@ std::vector<Point> finite_points(const PointRange& points, const PointMap& point
 // manual, section "Complexity and Performance", gives the measurements).
 constexpr std::size_t minimum_points_for_parallel_delaunay = 100000;
 
-// Calls `then(dt)` with the Delaunay triangulation of `points` built with `threads` threads
+// Calls `then(dt)` with the Delaunay triangulation of `points`, with the predicates of
+// `traits`, built with `threads` threads
 // (one without TBB, or for fewer than `minimum_points_for_parallel_delaunay` points). The
 // triangulation is sequential after its construction; it does not depend on the number of
 // threads (the Delaunay triangulation of a point set is unique with CGAL's symbolic
 // perturbation).
-template <class Kernel, class Point, class Then>
-void with_delaunay_triangulation(const std::vector<Point>& points, unsigned threads, const Then& then)
+template <class Geom_traits, class Point, class Then>
+void with_delaunay_triangulation(const std::vector<Point>& points, const Geom_traits& traits, unsigned threads,
+                                 const Then& then)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if(threads > 1 && points.size() >= minimum_points_for_parallel_delaunay) {
-    using Vb = Triangulation_vertex_base_3<Kernel>;
-    using Cb = Delaunay_triangulation_cell_base_3<Kernel>;
+    using Vb = Triangulation_vertex_base_3<Geom_traits>;
+    using Cb = Delaunay_triangulation_cell_base_3<Geom_traits>;
     using Tds = Triangulation_data_structure_3<Vb, Cb, Parallel_tag>;
-    using DT = Delaunay_triangulation_3<Kernel, Tds>;
+    using DT = Delaunay_triangulation_3<Geom_traits, Tds>;
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     Bbox_3 box = bbox_3(points.begin(), points.end());
     typename DT::Lock_data_structure locks(box, 50);
-    DT dt(points.begin(), points.end(), &locks);
+    DT dt(points.begin(), points.end(), traits, &locks);
     dt.set_lock_data_structure(nullptr);
     then(dt);
     return;
   }
 #endif
   (void)threads;
-  Delaunay_triangulation_3<Kernel> dt(points.begin(), points.end());
+  Delaunay_triangulation_3<Geom_traits> dt(points.begin(), points.end(), traits);
   then(dt);
 }
 

@@ -7,6 +7,7 @@
 #include <CGAL/Lex_optimal_chains/Open_surface_report.h>
 #include <CGAL/Lex_optimal_chains/Coefficient_field.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/internal/Geom_traits_check.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
 #include <CGAL/Lex_optimal_chains/internal/Homologous_chain_3.h>
@@ -182,8 +183,7 @@ void optimal_chain_with_boundary(const Triangulation& dt, const EdgeRange& cycle
 template <class Triangulation, class NamedParameters, class Run>
 Open_surface_report run_on_triangulation(const Triangulation& dt, const NamedParameters& np, const Run& run)
 {
-  static_assert(std::is_same<typename Triangulation::Geom_traits::FT, double>::value,
-                "the lexicographic chains need a triangulation with double coordinates (e.g. Epick)");
+  static_assert(internal::Has_double_coordinates<typename Triangulation::Geom_traits>::value, "");
   const std::function<bool(double)> callback = parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   Open_surface_report report;
