@@ -1,1 +1,1 @@
-${LEX_CGAL_DATA_DIR}/points_3/kitten.xyz kitten_lex.off
+${URBAN_CGAL_DATA_DIR}/points_3/kitten.xyz kitten_lex.off

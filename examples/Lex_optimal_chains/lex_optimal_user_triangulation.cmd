@@ -1,1 +1,1 @@
-${LEX_CGAL_DATA_DIR}/points_3/b9_training.ply b9_user_triangulation.off
+${URBAN_CGAL_DATA_DIR}/points_3/b9_training.ply b9_user_triangulation.off
