@@ -10,6 +10,23 @@ if(NOT CMAKE_CXX_STANDARD)
 endif()
 option(LEX_WITH_TBB "Use TBB for the parallel Delaunay triangulation when found" ON)
 
+# A test folder configured on its own (cmake -S test/<Pkg>), as CGAL's test suite does: the
+# tests are built, ctest runs them, with the warnings and ccache of the top level.
+if(NOT URBAN_TOP_LEVEL)
+  set(BUILD_TESTING ON CACHE BOOL "Build the tests (CGAL test-suite layout, run by ctest)")
+  enable_testing()
+  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    add_compile_options(-Wall -Wextra)
+  endif()
+  find_program(CCACHE_PROGRAM ccache)
+  if(CCACHE_PROGRAM)
+    set(CMAKE_CXX_COMPILER_LAUNCHER "${CCACHE_PROGRAM}")
+  endif()
+  if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+    set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+  endif()
+endif()
+
 find_package(CGAL 5.5 REQUIRED)
 find_package(Eigen3 3.3 QUIET)
 if(TARGET Eigen3::Eigen)

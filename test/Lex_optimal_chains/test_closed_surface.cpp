@@ -16,6 +16,8 @@
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/Lex_optimal_chains/Lexicographic_min_cut.h>
 
+#include "test_support.h"
+
 #include <boost/iterator/indirect_iterator.hpp>
 
 #include <algorithm>
@@ -101,19 +103,6 @@ LOC::Closed_surface_report reconstruct(const Points& pts, Mesh& m, const NP& np 
 {
   m.clear();
   return CGAL::lex_optimal_closed_surface_reconstruction(pts, m, np);
-}
-
-template <class F>
-void expect_error(LOC::Input_error_code code, const F& f)
-{
-  try {
-    f();
-  } catch(const LOC::Input_error& e) {
-    std::cout << "  expected error: " << e.what() << "\n";
-    assert(e.code() == code);
-    return;
-  }
-  assert(!"an Input_error was expected");
 }
 
 // ---- the oracle of the contracted cut: the straightforward algorithms on all the facets ----

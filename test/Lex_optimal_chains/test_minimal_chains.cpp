@@ -25,6 +25,8 @@
 #include <CGAL/Lex_optimal_chains/Simplex_orders.h>
 #include <CGAL/Lex_optimal_chains/triangulation_complex.h>
 
+#include "test_support.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -474,18 +476,6 @@ void test_critical_basis(CGAL::Random& rng, bool z2)
   }
   std::cout << "critical bases of up to " << largest << " cycles\n";
   assert(largest >= 5);
-}
-
-template <class F>
-void expect_error(LOC::Input_error_code code, const F& f)
-{
-  try { f(); }
-  catch(const LOC::Input_error& e) {
-    assert(e.code() == code);
-    std::cout << "  expected error: " << e.what() << "\n";
-    return;
-  }
-  assert(!"an Input_error was expected");
 }
 
 void test_bad_input()

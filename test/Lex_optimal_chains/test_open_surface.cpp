@@ -18,6 +18,8 @@
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 
+#include "test_support.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -34,16 +36,6 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using DT = CGAL::Delaunay_triangulation_3<K>;
 namespace LOC = CGAL::Lex_optimal_chains;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-std::vector<Point> height_field(CGAL::Random& rng, int n, double noise)
-{
-  std::vector<Point> points;
-  for(int i = 0; i < n; ++i) {
-    const double x = rng.get_double(0, 10), y = rng.get_double(0, 10);
-    points.emplace_back(x, y, std::sin(0.7 * x) * std::cos(0.5 * y) + 0.3 * x / 10 + rng.get_double(-noise, noise));
-  }
-  return points;
-}
 
 // border edges of the mesh as point pairs (undirected)
 std::set<std::pair<Point, Point>> border_edges(const Mesh& mesh)
@@ -78,22 +70,9 @@ long euler_characteristic(const Mesh& m)
   return long(m.number_of_vertices()) - long(m.number_of_edges()) + long(m.number_of_faces());
 }
 
-template <class F>
-void expect_error(LOC::Input_error_code code, const F& f)
-{
-  try { f(); }
-  catch(const LOC::Input_error& e) {
-    if(e.code() != code) std::cerr << "unexpected error: " << e.what() << "\n";
-    assert(e.code() == code);
-    std::cout << "  expected error: " << e.what() << "\n";
-    return;
-  }
-  assert(!"an Input_error was expected");
-}
-
 void test_height_field(CGAL::Random& rng)
 {
-  const std::vector<Point> points = height_field(rng, 4000, 0.02);
+  const std::vector<Point> points = height_field<Point>(rng, 4000, 0.02);
   const std::vector<Point> polygon = LOC::footprint_boundary(points);
   const std::set<std::pair<Point, Point>> polygon_edges = edges_of_polyline(polygon);
   const std::vector<std::vector<Point>> boundary{polygon};
@@ -261,7 +240,7 @@ void test_lattice_terrain(CGAL::Random& rng)
 
 void test_boundary_through_the_cloud(CGAL::Random& rng)
 {
-  const std::vector<Point> points = height_field(rng, 3000, 0.02);
+  const std::vector<Point> points = height_field<Point>(rng, 3000, 0.02);
   // a square well inside the footprint, on the surface, with short edges: points of the
   // cloud lie in the diametral balls of some of them (a tile border)
   const double cx[4] = {2, 8, 8, 2}, cy[4] = {2, 2, 8, 8};
@@ -290,7 +269,7 @@ void test_boundary_through_the_cloud(CGAL::Random& rng)
 
 void test_bad_input(CGAL::Random& rng)
 {
-  const std::vector<Point> points = height_field(rng, 500, 0.02);
+  const std::vector<Point> points = height_field<Point>(rng, 500, 0.02);
   const std::vector<Point> polygon = LOC::footprint_boundary(points);
   Mesh mesh;
   auto run = [&](const std::vector<Point>& pts, const std::vector<std::vector<Point>>& b) {
@@ -349,7 +328,7 @@ void test_footprint_of_steep_and_noisy_tiles(CGAL::Random& rng)
     // the polygon is a little below the ground on the high side of a steep tile
     check_tile(points, points.size(), slope == 1 ? 99 : 90, slope == 1 ? "tile sloping at 45 degrees" : "tile sloping at 63 degrees");
   }
-  std::vector<Point> points = height_field(rng, 3000, 0.02);
+  std::vector<Point> points = height_field<Point>(rng, 3000, 0.02);
   points.emplace_back(5, 5, -100); // far below the ground, inside the footprint
   check_tile(points, points.size() - 1, 99, "tile with a low outlier");
 }
@@ -373,7 +352,7 @@ void test_no_terrain(CGAL::Random& rng)
 // A duplicate given as (0, y, z) and (-0, y, z): the output does not depend on which comes first.
 void test_signed_zero_duplicates(CGAL::Random& rng)
 {
-  std::vector<Point> points = height_field(rng, 300, 0.02);
+  std::vector<Point> points = height_field<Point>(rng, 300, 0.02);
   points.emplace_back(0.0, 5, 0.2);
   points.emplace_back(-0.0, 5, 0.2);
   const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(points)};

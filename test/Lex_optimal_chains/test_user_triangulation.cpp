@@ -25,6 +25,8 @@
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 #include <CGAL/Lex_optimal_chains/insert_boundary.h>
 
+#include "test_support.h"
+
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -96,16 +98,6 @@ std::vector<Point> sphere(CGAL::Random& rng, int n, double noise)
   return points;
 }
 
-std::vector<Point> height_field(CGAL::Random& rng, int n, double noise)
-{
-  std::vector<Point> points;
-  for(int i = 0; i < n; ++i) {
-    const double x = rng.get_double(0, 10), y = rng.get_double(0, 10);
-    points.emplace_back(x, y, std::sin(0.7 * x) * std::cos(0.5 * y) + 0.3 * x / 10 + rng.get_double(-noise, noise));
-  }
-  return points;
-}
-
 // Builds the triangulation of `points`; the info of a vertex is the index of its point.
 template <class DT>
 void fill(DT& dt, const std::vector<Point>& points)
@@ -137,19 +129,6 @@ std::map<Point, std::size_t> vertices_of(const DT& dt)
     result[v->point()] = info;
   }
   return result;
-}
-
-template <class F>
-void expect_error(LOC::Input_error_code code, const F& f)
-{
-  try { f(); }
-  catch(const LOC::Input_error& e) {
-    if(e.code() != code) std::cerr << "unexpected error: " << e.what() << "\n";
-    assert(e.code() == code);
-    std::cout << "    expected error: " << e.what() << "\n";
-    return;
-  }
-  assert(!"an Input_error was expected");
 }
 
 template <class DT>
@@ -258,7 +237,7 @@ void test_blocked_boundary(const char* name, const std::vector<Point>& points, c
 
 void test_open_surfaces(CGAL::Random& rng)
 {
-  const std::vector<Point> points = height_field(rng, 3000, 0.02);
+  const std::vector<Point> points = height_field<Point>(rng, 3000, 0.02);
   const std::vector<std::vector<Point>> footprint{LOC::footprint_boundary(points)};
   Mesh reference;
   CGAL::lex_optimal_open_surface_reconstruction(points, footprint, reference);
