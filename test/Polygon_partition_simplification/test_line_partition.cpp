@@ -103,7 +103,7 @@ std::vector<K::Segment_2> projected_segments(unsigned seed)
 // search among configurations where they round in the order that once made it stop).
 void test_crossing_distance_at_concurrent_lines()
 {
-  using KP = PPS::internal::Kinetic_propagation_2;
+  using KP = PPS::internal::Kinetic_propagation_2<EK>;
   auto parameter = [](double px, double py, double qx, double qy, double ox, double oy, double vx, double vy) {
     const double a = py - qy, b = qx - px, c = px * qy - py * qx;
     return -(a * ox + b * oy + c) / (a * vx + b * vy);
@@ -148,7 +148,7 @@ void test_kinetic_rules(const std::vector<K::Segment_2>& input)
   const double margin = 0.2 * std::max(bbox.xmax() - bbox.xmin(), bbox.ymax() - bbox.ymin());
   const double x0 = bbox.xmin() - margin, x1 = bbox.xmax() + margin, y0 = bbox.ymin() - margin, y1 = bbox.ymax() + margin;
   const std::array<EK::Point_2, 4> box{EK::Point_2(x0, y0), EK::Point_2(x1, y0), EK::Point_2(x1, y1), EK::Point_2(x0, y1)};
-  PPS::internal::Kinetic_propagation_2 propagation(segments, box, 0, 0);
+  PPS::internal::Kinetic_propagation_2<EK> propagation(segments, box, 0, 0);
   propagation.run();
   std::vector<EK::Segment_2> extents;
   for(std::size_t i = 0; i < segments.size(); ++i) extents.push_back(propagation.extent(i));
@@ -189,7 +189,7 @@ void test_kinetic_rules(const std::vector<K::Segment_2>& input)
   for(std::size_t i = 0; i < order.size(); ++i) order[i] = order.size() - 1 - i;
   std::vector<EK::Segment_2> shuffled;
   for(std::size_t i : order) shuffled.push_back(segments[i]);
-  PPS::internal::Kinetic_propagation_2 again(shuffled, box, 0, 0);
+  PPS::internal::Kinetic_propagation_2<EK> again(shuffled, box, 0, 0);
   again.run();
   for(std::size_t k = 0; k < order.size(); ++k) {
     const EK::Segment_2 a = again.extent(k), b = extents[order[k]];
@@ -793,14 +793,14 @@ void test_crossings_with_far_points()
   for(std::size_t i = 0; i < edges.size(); ++i)
     for(std::size_t j = i + 1; j < edges.size(); ++j)
       if(meet(i, j)) expected.emplace_back(i, j);
-  const auto found = PPS::internal::crossing_edge_pairs(points, edges, true, [](const auto&, const auto&) { return true; });
+  const auto found = PPS::internal::crossing_edge_pairs<K>(points, edges, true, [](const auto&, const auto&) { return true; });
   std::cout << "crossings with far points: " << found.size() << " pairs (brute force " << expected.size() << ")" << std::endl;
   CHECK(found == expected);
   std::size_t far_pairs = 0;
   for(const auto& [i, j] : expected) if(i >= 400 || j >= 400) ++far_pairs;
   CHECK(far_pairs >= 6);
   // with some edges known free of crossings: only the pairs with a suspect are reported
-  const auto some = PPS::internal::crossing_edge_pairs(points, edges, true, [&](const auto& a, const auto&) {
+  const auto some = PPS::internal::crossing_edge_pairs<K>(points, edges, true, [&](const auto& a, const auto&) {
     return a[0] < 0; // the edges whose first end has x < 0
   });
   std::vector<std::pair<std::size_t, std::size_t>> expected_some;
@@ -815,7 +815,7 @@ void test_crossings_with_far_points()
     CHECK(known.contains(points[edges[e][0]], points[edges[e][1]]) == (e % 2 == 0));
     CHECK(known.contains(points[edges[e][1]], points[edges[e][0]]) == (e % 2 == 0));
   }
-  const auto odd = PPS::internal::crossing_edge_pairs(points, edges, true, [&](const auto& a, const auto& b) {
+  const auto odd = PPS::internal::crossing_edge_pairs<K>(points, edges, true, [&](const auto& a, const auto& b) {
     return !known.contains(a, b);
   });
   std::vector<std::pair<std::size_t, std::size_t>> expected_odd;

@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Geom_traits_check.h>
 #include <CGAL/Polygon_partition_simplification/internal/Kinetic_propagation_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/build_line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/release_hanging_corners_2.h>
@@ -28,6 +29,22 @@
 #include <vector>
 
 namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+// The partition that kinetic_partition_2() returns for `SegmentRange` and `NamedParameters`:
+// `Line_partition_2<Given>`, `Given` the type of `geom_traits`, or else the kernel of the segments.
+template <class SegmentRange, class NamedParameters>
+struct Result_of_segments
+{
+  using Segment = std::decay_t<decltype(*std::begin(std::declval<const SegmentRange&>()))>;
+  using Given = typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                                   typename Kernel_traits<Segment>::Kernel>::type;
+  using type = Line_partition_2<Given>;
+};
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
 
 /*!
 \ingroup PkgPolygonPartitionSimplificationRef
@@ -56,13 +73,29 @@ longest of them, with exact constructions: a segment whose two endpoints are wit
 the points of the partition, computed in double from nearly identical lines, could make it
 invalid (one such wall can be enough).
 
-\tparam SegmentRange a range of `Segment_2` of a CGAL kernel `K`
+The exact constructions (intersection points, arrival times, the projections of the
+snapping, the arrangement of the extents) are those of the `Exact_constructions_kernel` of the
+geometric traits; the decisions on the double points of the partition are taken with the
+predicates of its `Exact_predicates_kernel` (see `PolygonPartitionSimplificationTraits_2`). The
+coordinates of the segments are read as doubles (the nearest double of an exact coordinate), so
+the user-facing kernel `K` may have inexact predicates (`Simple_cartesian<double>`) or exact
+constructions (`Exact_predicates_exact_constructions_kernel`): the result is the same.
+
+\tparam SegmentRange a range of `Segment_2` of a CGAL kernel `K` (of the geometric traits, when
+`geom_traits` is given)
 \tparam NamedParameters a sequence of named parameters
 
 \param segments the input segments
 \param np optional named parameters among the ones listed below
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a model of `PolygonPartitionSimplificationTraits_2`, or a CGAL kernel `K`,
+                    which stands for `Polygon_partition_simplification_traits_2<K>`}
+    \cgalParamDefault{`Polygon_partition_simplification_traits_2<K>`, `K` the kernel of the
+                      segments (`Kernel_traits`)}
+  \cgalParamNEnd
   \cgalParamNBegin{maximum_number_of_crossings}
     \cgalParamDescription{number of segments a growing end may cross before the next one
                           stops it (`Polygon_partition_simplification::parameters`)}
@@ -94,7 +127,8 @@ invalid (one such wall can be enough).
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\return the partition, in line representation. Its points are computed in double precision
+\return the partition, in line representation: a `Line_partition_2<GT>`, with `GT` the type of
+`geom_traits`, or `K` by default. Its points are computed in double precision
 from its lines: two exact intersection points closer than the precision of doubles (segments
 on nearly identical lines farther apart than `collinearity_distance` that cross) can get the
 same coordinates, and the partition is then not valid (`Line_partition_2::is_valid()` says
@@ -114,20 +148,31 @@ of zero length or shorter than 1e-100 (`ZERO_LENGTH_SEGMENT`) or twice the same 
 */
 template <class SegmentRange,
           class NamedParameters = parameters::Default_named_parameters>
-Polygon_partition_simplification::Line_partition_2<
-  typename Kernel_traits<std::decay_t<decltype(*std::begin(std::declval<const SegmentRange&>()))>>::Kernel>
+#ifdef DOXYGEN_RUNNING
+Polygon_partition_simplification::Line_partition_2<GT>
+#else
+typename Polygon_partition_simplification::internal::Result_of_segments<SegmentRange, NamedParameters>::type
+#endif
 kinetic_partition_2(const SegmentRange& segments,
                     const NamedParameters& np = parameters::default_values())
 {
   namespace PPS = Polygon_partition_simplification;
   using Segment = std::decay_t<decltype(*std::begin(segments))>; // any range, C arrays included
-  using K = typename Kernel_traits<Segment>::Kernel;
-  using Partition = PPS::Line_partition_2<K>;
-  using EK = PPS::internal::Exact_kernel;
+  using Result = PPS::internal::Result_of_segments<SegmentRange, NamedParameters>;
+  using Partition = typename Result::type;
+  using Geom_traits = typename Partition::Geom_traits;
+  static_assert(PPS::internal::Is_input_of_geom_traits<Segment, typename Geom_traits::Segment_2>::value, "");
+  using EK = typename Geom_traits::Exact_constructions_kernel;
+  using PK = typename Geom_traits::Exact_predicates_kernel;
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using PPS::Input_error;
   using PPS::Input_error_code;
+  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, internal_np::geom_traits));
+  const auto source = gt.construct_source_2_object();
+  const auto target = gt.construct_target_2_object();
+  const auto x_of = gt.compute_x_2_object();
+  const auto y_of = gt.compute_y_2_object();
 
   const std::size_t maximum_crossings = choose_parameter(
     get_parameter(np, PPS::internal_np::maximum_number_of_crossings), std::size_t(0));
@@ -147,8 +192,9 @@ kinetic_partition_2(const SegmentRange& segments,
   // Checks: nothing is modified, an error says which segment is wrong.
   std::vector<std::array<double, 4>> input;
   for(const Segment& s : segments) {
-    const std::array<double, 4> c{CGAL::to_double(s.source().x()), CGAL::to_double(s.source().y()),
-                                  CGAL::to_double(s.target().x()), CGAL::to_double(s.target().y())};
+    // the nearest doubles (a double as it is)
+    const std::array<double, 4> c{PPS::internal::double_of(x_of(source(s))), PPS::internal::double_of(y_of(source(s))),
+                                  PPS::internal::double_of(x_of(target(s))), PPS::internal::double_of(y_of(target(s)))};
     const std::string which = "segment " + std::to_string(input.size());
     for(double x : c)
       if(!std::isfinite(x) || std::abs(x) > 1e100)
@@ -182,25 +228,25 @@ kinetic_partition_2(const SegmentRange& segments,
 
   std::vector<std::array<double, 2>> endpoints;
   for(const auto& c : input) { endpoints.push_back({c[0], c[1]}); endpoints.push_back({c[2], c[3]}); }
-  const PPS::internal::Enclosing_rectangle_2 rectangle = PPS::internal::enclosing_rectangle(endpoints);
+  const PPS::internal::Enclosing_rectangle_2 rectangle = PPS::internal::enclosing_rectangle<PK>(endpoints);
   const double half_diagonal = rectangle.half_diagonal();
   // corners away from the lines of the segments (see corners_off_lines())
-  const auto [corners, margin_across] = PPS::internal::corners_off_lines(rectangle, margin * half_diagonal, input);
-  std::array<EK::Point_2, 4> box;
-  for(int k = 0; k < 4; ++k) box[k] = EK::Point_2(corners[k][0], corners[k][1]);
+  const auto [corners, margin_across] = PPS::internal::corners_off_lines<PK>(rectangle, margin * half_diagonal, input);
+  std::array<typename EK::Point_2, 4> box;
+  for(int k = 0; k < 4; ++k) box[k] = typename EK::Point_2(corners[k][0], corners[k][1]);
 
   if(default_collinearity) collinearity = 1e-7 * half_diagonal;
   // every segment is on the line of its group's reference segment, given by its two double
   // endpoints (which spares the exact evaluation of the extents' ends to identify lines)
   const std::vector<std::size_t> reference = PPS::internal::collinear_groups(input, collinearity);
-  const std::vector<EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments(input, reference);
-  std::vector<PPS::internal::Exact_piece> metric_segments;
+  const std::vector<typename EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments<EK>(input, reference);
+  std::vector<PPS::internal::Exact_piece<EK>> metric_segments;
   for(std::size_t i = 0; i < input.size(); ++i) metric_segments.push_back({exact_segments[i], false, reference[i]});
   // the propagation needs distinct segments (two moved onto the same line can coincide; the
   // metric of their line counts both), in an order that does not depend on the input's
-  std::vector<std::pair<EK::Segment_2, std::size_t>> distinct; // with the group
+  std::vector<std::pair<typename EK::Segment_2, std::size_t>> distinct; // with the group
   {
-    auto canonical = [](const EK::Segment_2& s) {
+    auto canonical = [](const typename EK::Segment_2& s) {
       return CGAL::compare_xy(s.source(), s.target()) == CGAL::LARGER ? s.opposite() : s;
     };
     for(std::size_t i = 0; i < input.size(); ++i) distinct.emplace_back(canonical(exact_segments[i]), reference[i]);
@@ -213,7 +259,7 @@ kinetic_partition_2(const SegmentRange& segments,
                                [](const auto& a, const auto& b) { return a.first == b.first; }),
                    distinct.end());
   }
-  std::vector<EK::Segment_2> distinct_segments;
+  std::vector<typename EK::Segment_2> distinct_segments;
   for(const auto& d : distinct) distinct_segments.push_back(d.first);
 
   PPS::internal::Enclosing_rectangle_2 framed = rectangle;
@@ -222,15 +268,15 @@ kinetic_partition_2(const SegmentRange& segments,
   const auto frame = PPS::internal::frame_of<typename Partition::Frame>(framed);
 
   // The partition of a propagation that has run: the extents and the sides of the rectangle.
-  auto partition_of = [&](const PPS::internal::Kinetic_propagation_2& propagation) {
-    std::vector<PPS::internal::Exact_piece> pieces;
+  auto partition_of = [&](const PPS::internal::Kinetic_propagation_2<EK>& propagation) {
+    std::vector<PPS::internal::Exact_piece<EK>> pieces;
     pieces.reserve(distinct.size() + 4);
     for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false, distinct[i].second});
-    for(int k = 0; k < 4; ++k) pieces.push_back({EK::Segment_2(box[k], box[(k + 1) % 4]), true});
-    return PPS::internal::build_line_partition<K>(pieces, metric_segments, frame, input);
+    for(int k = 0; k < 4; ++k) pieces.push_back({typename EK::Segment_2(box[k], box[(k + 1) % 4]), true});
+    return PPS::internal::build_line_partition<typename Result::Given>(pieces, metric_segments, frame, gt, input);
   };
   auto make_propagation = [&] {
-    return PPS::internal::Kinetic_propagation_2(distinct_segments, box, maximum_crossings, crossing_distance);
+    return PPS::internal::Kinetic_propagation_2<EK>(distinct_segments, box, maximum_crossings, crossing_distance);
   };
   // again with some corners released while a chain of corners hangs at a point (see
   // release_hanging_corners_2.h)

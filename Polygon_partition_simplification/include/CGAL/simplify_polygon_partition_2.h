@@ -93,7 +93,8 @@ and \f$\epsilon_n = \epsilon / \mathrm{half\ diagonal}\f$), this is the energy o
 and \f$\lambda'_2 = \lambda_2 \epsilon_n^2\f$: with the default \f$\epsilon_n = 0.01\f$, the defaults
 \f$\lambda_1 = 0.5\f$ and \f$\lambda_2 = 5\f$ are \f$\lambda'_1 = 0.005\f$ and \f$\lambda'_2 = 0.0005\f$.
 
-\tparam GeomTraits the kernel of the partition
+\tparam GeomTraits the geometric traits of the partition (see `Line_partition_2`): its exact
+predicates decide the validity of every round
 \tparam NamedParameters a sequence of named parameters
 
 \param partition the partition, replaced by its simplification
@@ -183,6 +184,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
 {
   namespace PPS = Polygon_partition_simplification;
   using Partition = PPS::Line_partition_2<GeomTraits>;
+  using Geom_traits = typename Partition::Geom_traits;
   using Statistics = PPS::Simplification_statistics;
   const auto clock_start = std::chrono::steady_clock::now();
 
@@ -223,7 +225,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
   std::vector<bool> changed; // lines the previous round changed (none before the first: all move)
   for(;;) {
     PPS::internal::Round_reductions round =
-      PPS::internal::simplification_round(w, changed, settings, stats.iterations);
+      PPS::internal::simplification_round<Geom_traits>(w, changed, settings, stats.iterations);
     ++stats.rounds;
     stats.rejected_rounds += round.rejected_attempts;
     stats.line_merges += round.counts.line_merges;
@@ -231,7 +233,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     stats.removed_points += round.counts.removed_points;
     stats.far_points += round.counts.far_points;
     if(callback) { // the statistics so far, the `_after` fields describing the partition passed
-      const Partition current = PPS::internal::line_partition<GeomTraits>(w, partition.frame());
+      const Partition current = PPS::internal::line_partition<GeomTraits>(w, partition.frame(), partition.geom_traits());
       describe_result(current);
       if(!callback(current, stats)) break;
     }
@@ -239,7 +241,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     changed = std::move(round.changed_lines);
   }
 
-  partition = PPS::internal::line_partition<GeomTraits>(w, partition.frame());
+  partition = PPS::internal::line_partition<GeomTraits>(w, partition.frame(), partition.geom_traits());
   describe_result(partition);
   return stats;
 }

@@ -6,16 +6,15 @@
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
+#include <CGAL/Polygon_partition_simplification_traits_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Geom_traits_check.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
 
 #include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
 #include <array>
@@ -84,7 +83,15 @@ thesis). `point()` and `segment()` return input coordinates.
 Partitions are built by `kinetic_partition_2()`, `line_partition_from_arrangement_2()` and
 `line_partition_from_polygons_2()`, and simplified by `simplify_polygon_partition_2()`.
 
-\tparam GeomTraits a model of `Kernel` (for `Point_2`, `Segment_2`, `Polygon_2`)
+The predicates and constructions come from the geometric traits: the points, segments and
+cells are given in its user-facing kernel, the exact arrangement is built with its
+`Exact_constructions_kernel`, and every decision on the points (validity, cells) is taken with
+the predicates of its `Exact_predicates_kernel` on their double coordinates.
+
+\tparam GeomTraits a model of `PolygonPartitionSimplificationTraits_2`; a CGAL kernel `K` (any
+model of `Kernel`, whose predicates need not be exact) stands for
+`Polygon_partition_simplification_traits_2<K>`, so that `Line_partition_2<K>` is the partition
+that the functions of the package return for input in `K` by default
 */
 template <class GeomTraits>
 class Line_partition_2
@@ -92,15 +99,21 @@ class Line_partition_2
 public:
   /// \name Types
   /// @{
-  using Geom_traits = GeomTraits;                                   ///< the kernel
+#ifdef DOXYGEN_RUNNING
+  /// the geometric traits: `GeomTraits`, or `Polygon_partition_simplification_traits_2<GeomTraits>`
+  /// when `GeomTraits` is a kernel
+  using Geom_traits = unspecified_type;
+#else
+  using Geom_traits = typename internal::Geom_traits_of<GeomTraits>::type;
+#endif
   using FT = typename Geom_traits::FT;                              ///< number type
   using Point_2 = typename Geom_traits::Point_2;                    ///< point type
   using Segment_2 = typename Geom_traits::Segment_2;                ///< segment type
-  using Polygon_2 = CGAL::Polygon_2<Geom_traits>;                   ///< polygon type
-  using Polygon_with_holes_2 = CGAL::Polygon_with_holes_2<Geom_traits>; ///< cell type
+  using Polygon_2 = typename Geom_traits::Polygon_2;                ///< polygon type
+  using Polygon_with_holes_2 = typename Geom_traits::Polygon_with_holes_2; ///< cell type
   /// the arrangement built (exactly) from the current edges, by `exact_arrangement()`
   using Exact_arrangement_2 =
-    CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<CGAL::Exact_predicates_exact_constructions_kernel>>;
+    CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<typename Geom_traits::Exact_constructions_kernel>>;
 
   /// Similarity between input coordinates and the normalized frame:
   /// normalized = (input - center) / scale.
@@ -141,17 +154,22 @@ public:
   /// an empty partition
   Line_partition_2() = default;
 
+  /// an empty partition with the geometric traits `gt`
+  explicit Line_partition_2(const Geom_traits& gt) : traits_(gt) {}
+
   /// a partition from its parts (no check: call `is_valid()`)
   Line_partition_2(const Frame& frame, std::vector<Line> lines, std::vector<Vertex> vertices,
-                   std::vector<Edge> edges)
+                   std::vector<Edge> edges, const Geom_traits& gt = Geom_traits())
     : frame_(frame), lines_(std::move(lines)), vertices_(std::move(vertices)),
-      edges_(std::move(edges))
+      edges_(std::move(edges)), traits_(gt)
   {}
   /// @}
 
   /// \name Access
   /// @{
 
+  /// the geometric traits
+  const Geom_traits& geom_traits() const { return traits_; }
   /// the similarity to the normalized frame
   const Frame& frame() const { return frame_; }
   /// the lines
@@ -179,13 +197,13 @@ public:
   Point_2 point(std::size_t v) const
   {
     const std::array<double, 2> p = normalized_point(v);
-    return Point_2(frame_.center_x + frame_.scale * p[0], frame_.center_y + frame_.scale * p[1]);
+    return input_point(frame_.center_x + frame_.scale * p[0], frame_.center_y + frame_.scale * p[1]);
   }
 
   /// edge `e` as a segment (input frame)
   Segment_2 segment(std::size_t e) const
   {
-    return Segment_2(point(edges_[e].source), point(edges_[e].target));
+    return traits_.construct_segment_2_object()(point(edges_[e].source), point(edges_[e].target));
   }
 
   /// number of pairs of lines meeting at a point whose angle differs from 90 degrees by less
@@ -216,7 +234,7 @@ public:
   */
   Exact_arrangement_2 exact_arrangement() const
   {
-    const auto segments = drawable_segments<CGAL::Exact_predicates_exact_constructions_kernel>();
+    const auto segments = drawable_segments<typename Geom_traits::Exact_constructions_kernel>();
     Exact_arrangement_2 arrangement;
     CGAL::insert(arrangement, segments.begin(), segments.end());
     return arrangement;
@@ -254,14 +272,20 @@ public:
   OutputIterator cells(OutputIterator out) const
   {
     const Planar_arrangement arrangement = planar_arrangement();
-    auto ccb_polygon = [this](typename Planar_arrangement::Ccb_halfedge_const_circulator start) {
-      Polygon_2 polygon;
+    // the orientation is decided on the double coordinates of the vertices, with the predicates
+    // of the exact predicates kernel (not with those of the polygon's kernel, which may be inexact)
+    std::vector<typename Exact_predicates_kernel::Point_2> ring;
+    auto ccb_polygon = [this, &ring](typename Planar_arrangement::Ccb_halfedge_const_circulator start) {
+      ring.clear();
       auto h = start;
       do {
         const auto& p = h->target()->point();
-        polygon.push_back(Point_2(frame_.center_x + frame_.scale * p.x(), frame_.center_y + frame_.scale * p.y()));
+        ring.emplace_back(frame_.center_x + frame_.scale * p.x(), frame_.center_y + frame_.scale * p.y());
       } while(++h != start);
-      if(polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
+      Polygon_2 polygon;
+      for(const auto& q : ring) polygon.push_back(input_point(q.x(), q.y()));
+      if(CGAL::orientation_2(ring.begin(), ring.end(), Exact_predicates_kernel()) == CGAL::CLOCKWISE)
+        polygon.reverse_orientation();
       return polygon;
     };
     for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
@@ -291,11 +315,18 @@ public:
   /// @}
 
 private:
+  static_assert(internal::Is_geom_traits_checked<Geom_traits>::value, "");
+
   // The points and edges are exactly representable (double coordinates): once no two edges
   // cross, their arrangement needs exact predicates only (no constructions), which the
-  // filtered predicates of Epick and the non-caching segment traits give at double speed.
-  using Fast_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Planar_arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<Fast_kernel>>;
+  // filtered predicates of the exact predicates kernel (Epick) and the non-caching segment
+  // traits give at double speed.
+  using Exact_predicates_kernel = typename Geom_traits::Exact_predicates_kernel;
+  using Planar_arrangement =
+    CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<Exact_predicates_kernel>>;
+
+  // the point of the user-facing kernel at (x, y)
+  Point_2 input_point(double x, double y) const { return traits_.construct_point_2_object()(FT(x), FT(y)); }
 
   // The points (normalized frame) and the edges that can be drawn, as pairs of points. An edge
   // of an invalid partition may have an end at infinity or two coinciding ends: it bounds
@@ -330,7 +361,7 @@ private:
   // the arrangement of the edges, which must not cross (`has_crossings()` false)
   Planar_arrangement planar_arrangement() const
   {
-    const auto segments = drawable_segments<Fast_kernel>();
+    const auto segments = drawable_segments<Exact_predicates_kernel>();
     Planar_arrangement arrangement;
     CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
     return arrangement;
@@ -355,20 +386,24 @@ private:
   // The first defect (empty if none); with `defective`, collects the edges of all defects.
   std::string analyze(std::vector<std::size_t>* defective) const
   {
-    return internal::partition_defect(Validity_view{*this}, defective, [](const auto&, const auto&) { return true; });
+    return internal::partition_defect<Geom_traits>(Validity_view{*this}, defective,
+                                                   [](const auto&, const auto&) { return true; });
   }
 
   // do two drawable edges meet elsewhere than at a common end?
   bool has_crossings() const
   {
     const auto [points, edges] = drawable_edges();
-    return !internal::crossing_edge_pairs(points, edges, false, [](const auto&, const auto&) { return true; }).empty();
+    return !internal::crossing_edge_pairs<Exact_predicates_kernel>(points, edges, false,
+                                                                   [](const auto&, const auto&) { return true; })
+              .empty();
   }
 
   Frame frame_;
   std::vector<Line> lines_;
   std::vector<Vertex> vertices_;
   std::vector<Edge> edges_;
+  Geom_traits traits_;
 };
 
 } // namespace Polygon_partition_simplification

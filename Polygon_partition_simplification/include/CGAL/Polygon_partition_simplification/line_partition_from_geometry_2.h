@@ -9,6 +9,7 @@
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Geom_traits_check.h>
 #include <CGAL/Polygon_partition_simplification/internal/build_line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/snap_collinear_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
@@ -30,39 +31,42 @@ namespace Polygon_partition_simplification {
 namespace internal {
 
 // `collinearity` < 0 stands for the default: 1e-7 times the half-diagonal of the input;
-// `overlay_first`: the pieces may cross or overlap (they are not the edges of an arrangement)
-template <class GeomTraits>
-Line_partition_2<GeomTraits> line_partition_from_pieces(std::vector<Exact_piece>& pieces, double collinearity,
-                                                        bool overlay_first)
+// `overlay_first`: the pieces may cross or overlap (they are not the edges of an arrangement);
+// `gt`: the geometric traits of the result, whose exact constructions kernel is `EK`.
+template <class GeomTraits, class EK>
+Line_partition_2<GeomTraits> line_partition_from_pieces(std::vector<Exact_piece<EK>>& pieces, double collinearity,
+                                                        bool overlay_first,
+                                                        const typename Line_partition_2<GeomTraits>::Geom_traits& gt)
 {
+  using PK = typename Line_partition_2<GeomTraits>::Geom_traits::Exact_predicates_kernel;
   if(pieces.empty()) throw Input_error(Input_error_code::EMPTY_INPUT, "the input has no edge");
   std::vector<std::array<double, 2>> points;
   for(const auto& p : pieces)
     for(const auto& q : {p.segment.source(), p.segment.target()})
       points.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y())});
-  const Enclosing_rectangle_2 rectangle = enclosing_rectangle(points);
+  const Enclosing_rectangle_2 rectangle = enclosing_rectangle<PK>(points);
   // edges collinear up to rounding (a vertex in the middle of a straight wall at an angle) are
   // moved onto one line, as the segments of kinetic_partition_2() are; the vertices are moved,
   // so the pieces are first split where they meet (an edge given by both polygons it
   // separates is one edge, a corner of a polygon on the side of another is a vertex of both)
   if(collinearity < 0) collinearity = 1e-7 * rectangle.half_diagonal();
   if(collinearity > 0) {
-    std::vector<Exact_kernel::Segment_2> edges;
+    std::vector<typename EK::Segment_2> edges;
     if(overlay_first) {
-      CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<Exact_kernel>> overlay;
-      std::vector<Exact_kernel::Segment_2> segments;
+      CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<EK>> overlay;
+      std::vector<typename EK::Segment_2> segments;
       for(const auto& p : pieces) segments.push_back(p.segment);
       CGAL::insert(overlay, segments.begin(), segments.end());
       for(auto e = overlay.edges_begin(); e != overlay.edges_end(); ++e)
         edges.emplace_back(e->source()->point(), e->target()->point());
     } else
       for(const auto& p : pieces) edges.push_back(p.segment);
-    if(snap_collinear_edges(edges, collinearity) > 0) {
+    if(snap_collinear_edges<EK>(edges, collinearity) > 0) {
       pieces.clear();
       for(const auto& e : edges) pieces.push_back({e, false});
     }
   }
-  return build_line_partition<GeomTraits>(pieces, {}, frame_of<typename Line_partition_2<GeomTraits>::Frame>(rectangle));
+  return build_line_partition<GeomTraits>(pieces, {}, frame_of<typename Line_partition_2<GeomTraits>::Frame>(rectangle), gt);
 }
 
 template <class NamedParameters>
@@ -86,15 +90,30 @@ struct Ring_of<Polygon, std::void_t<decltype(std::declval<const Polygon&>().oute
   using type = std::decay_t<decltype(std::declval<const Polygon&>().outer_boundary())>;
 };
 
-template <class Point>
-Exact_kernel::Point_2 exact_point(const Point& p, const std::string& where)
+// `p` in `EK`, the exact constructions kernel of the geometric traits, converted exactly from
+// the kernel of `p`.
+template <class EK, class Point>
+typename EK::Point_2 exact_point(const Point& p, const std::string& where)
 {
   using K = typename Kernel_traits<Point>::Kernel;
   const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
   if(!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > 1e100 || std::abs(y) > 1e100)
     throw Input_error(Input_error_code::NON_FINITE_COORDINATE, where + " has a NaN, infinite or huge (beyond 1e100) coordinate");
-  return CGAL::Cartesian_converter<K, Exact_kernel>()(p);
+  return CGAL::Cartesian_converter<K, EK>()(p);
 }
+
+// The partition that line_partition_from_polygons_2() returns for `PolygonRange` and
+// `NamedParameters`: `Line_partition_2<Given>`, `Given` the type of `geom_traits`, or else the
+// kernel of the polygons.
+template <class PolygonRange, class NamedParameters>
+struct Result_of_polygons
+{
+  using Polygon = std::decay_t<decltype(*std::begin(std::declval<const PolygonRange&>()))>;
+  using Point = typename Ring_of<Polygon>::type::Point_2;
+  using Given = typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::geom_traits_t, NamedParameters,
+                                                                   typename Kernel_traits<Point>::Kernel>::type;
+  using type = Line_partition_2<Given>;
+};
 
 } // namespace internal
 
@@ -118,11 +137,22 @@ others keep their own lines. Without this, the points of the partition, computed
 from nearly identical lines, could make it invalid (a rotated rectangle with a vertex in the
 middle of a side can be enough).
 
-\tparam GeomTraits the kernel of the result
+The vertices are converted exactly (`Cartesian_converter`) to the `Exact_constructions_kernel`
+of the geometric traits, which gives the exact constructions; the arrangement may be in another
+kernel than the result.
+
+\tparam GeomTraits the geometric traits of the result: a model of
+`PolygonPartitionSimplificationTraits_2`, or a CGAL kernel `K`, which stands for
+`Polygon_partition_simplification_traits_2<K>` (see `Line_partition_2`)
 \tparam Arrangement an `Arrangement_2` of segments
 \tparam NamedParameters a sequence of named parameters
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of the geometric traits}
+    \cgalParamType{`Line_partition_2<GeomTraits>::Geom_traits`}
+    \cgalParamDefault{a default-constructed one}
+  \cgalParamNEnd
   \cgalParamNBegin{collinearity_distance}
     \cgalParamDescription{edges whose two endpoints are within this distance of the line of a
                           longer edge are put on that line, by moving their vertices (input
@@ -141,15 +171,19 @@ template <class GeomTraits, class Arrangement, class NamedParameters = parameter
 Line_partition_2<GeomTraits> line_partition_from_arrangement_2(const Arrangement& arrangement,
                                                               const NamedParameters& np = parameters::default_values())
 {
+  using Geom_traits = typename Line_partition_2<GeomTraits>::Geom_traits;
+  using EK = typename Geom_traits::Exact_constructions_kernel;
+  const Geom_traits gt =
+    parameters::choose_parameter<Geom_traits>(parameters::get_parameter(np, CGAL::internal_np::geom_traits));
   const double collinearity = internal::collinearity_parameter(np);
-  std::vector<internal::Exact_piece> pieces;
+  std::vector<internal::Exact_piece<EK>> pieces;
   for(auto e = arrangement.edges_begin(); e != arrangement.edges_end(); ++e) {
     const std::string where = "edge " + std::to_string(pieces.size());
-    pieces.push_back({internal::Exact_kernel::Segment_2(internal::exact_point(e->source()->point(), where),
-                                                        internal::exact_point(e->target()->point(), where)),
+    pieces.push_back({typename EK::Segment_2(internal::exact_point<EK>(e->source()->point(), where),
+                                             internal::exact_point<EK>(e->target()->point(), where)),
                       false});
   }
-  return internal::line_partition_from_pieces<GeomTraits>(pieces, collinearity, false);
+  return internal::line_partition_from_pieces<GeomTraits>(pieces, collinearity, false, gt);
 }
 
 /*!
@@ -162,10 +196,20 @@ Zero-length edges (repeated vertices) are ignored. Edges collinear up to roundin
 line as in `line_partition_from_arrangement_2()`, after the overlay (so that an edge given by
 the two polygons it separates, or a corner lying on the side of another polygon, moves as one).
 
+The vertices are converted exactly (`Cartesian_converter`) to the `Exact_constructions_kernel`
+of the geometric traits, which gives the exact constructions of the overlay and of the
+snapping; the kernel `K` of the polygons may have inexact predicates.
+
 \tparam PolygonRange a range of `CGAL::Polygon_2<K>` or `CGAL::Polygon_with_holes_2<K>`
 \tparam NamedParameters a sequence of named parameters
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of the geometric traits of the result}
+    \cgalParamType{a model of `PolygonPartitionSimplificationTraits_2`, or a CGAL kernel, which
+                    stands for `Polygon_partition_simplification_traits_2` of it}
+    \cgalParamDefault{`Polygon_partition_simplification_traits_2<K>`}
+  \cgalParamNEnd
   \cgalParamNBegin{collinearity_distance}
     \cgalParamDescription{edges whose two endpoints are within this distance of the line of a
                           longer edge are put on that line, by moving their vertices (input
@@ -177,23 +221,34 @@ the two polygons it separates, or a corner lying on the side of another polygon,
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
+\return a `Line_partition_2<GT>`, with `GT` the type of `geom_traits`, or `K` by default
+
 \throws Input_error when there is no edge (`EMPTY_INPUT`), a NaN, infinite or huge (beyond 1e100)
 coordinate (`NON_FINITE_COORDINATE`), no cell (`NO_CELL`), or a negative or infinite
 `collinearity_distance` (`INVALID_PARAMETER`).
 */
 template <class PolygonRange, class NamedParameters = parameters::Default_named_parameters>
-auto line_partition_from_polygons_2(const PolygonRange& polygons, const NamedParameters& np = parameters::default_values())
+#ifdef DOXYGEN_RUNNING
+Line_partition_2<GT>
+#else
+typename internal::Result_of_polygons<PolygonRange, NamedParameters>::type
+#endif
+line_partition_from_polygons_2(const PolygonRange& polygons, const NamedParameters& np = parameters::default_values())
 {
+  using Result = internal::Result_of_polygons<PolygonRange, NamedParameters>;
+  using Polygon = typename Result::Polygon; // any range, C arrays included
+  using Geom_traits = typename Result::type::Geom_traits;
+  using EK = typename Geom_traits::Exact_constructions_kernel;
+  const Geom_traits gt =
+    parameters::choose_parameter<Geom_traits>(parameters::get_parameter(np, CGAL::internal_np::geom_traits));
   const double collinearity = internal::collinearity_parameter(np);
-  using Polygon = std::decay_t<decltype(*std::begin(polygons))>; // any range, C arrays included
-  using K = typename Kernel_traits<typename internal::Ring_of<Polygon>::type::Point_2>::Kernel;
-  std::vector<internal::Exact_piece> pieces;
+  std::vector<internal::Exact_piece<EK>> pieces;
   std::size_t index = 0;
   auto add_ring = [&](const auto& ring) {
     const std::string where = "polygon " + std::to_string(index);
     for(auto e = ring.edges_begin(); e != ring.edges_end(); ++e) {
-      const auto p = internal::exact_point(e->source(), where), q = internal::exact_point(e->target(), where);
-      if(p != q) pieces.push_back({internal::Exact_kernel::Segment_2(p, q), false});
+      const auto p = internal::exact_point<EK>(e->source(), where), q = internal::exact_point<EK>(e->target(), where);
+      if(p != q) pieces.push_back({typename EK::Segment_2(p, q), false});
     }
   };
   for(const Polygon& polygon : polygons) {
@@ -205,7 +260,7 @@ auto line_partition_from_polygons_2(const PolygonRange& polygons, const NamedPar
     }
     ++index;
   }
-  return internal::line_partition_from_pieces<K>(pieces, collinearity, true);
+  return internal::line_partition_from_pieces<typename Result::Given>(pieces, collinearity, true, gt);
 }
 
 } // namespace Polygon_partition_simplification

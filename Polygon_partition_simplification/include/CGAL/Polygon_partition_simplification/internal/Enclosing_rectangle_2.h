@@ -6,9 +6,9 @@
 
 // The smallest-area enclosing rectangle of a point set (CGAL::min_rectangle_2 on its convex
 // hull). It moves with the points under rigid motions and scalings, so the normalized frame
-// and the bounding box of a kinetic partition do too.
+// and the bounding box of a kinetic partition do too. `PK`: the exact predicates kernel of the
+// geometric traits (double coordinates, exact predicates).
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/min_quadrilateral_2.h>
 
@@ -51,10 +51,11 @@ struct Enclosing_rectangle_2
 // their margin) until every corner is at least 1e-6 half-diagonals from the line of every
 // segment that does not pass exactly through it. A corner moves along the sides of the axis,
 // which no line near it is parallel to (the segments are inside the rectangle).
-inline std::pair<std::array<std::array<double, 2>, 4>, double>
+template <class PK>
+std::pair<std::array<std::array<double, 2>, 4>, double>
 corners_off_lines(const Enclosing_rectangle_2& rectangle, double margin, const std::vector<std::array<double, 4>>& segments)
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using K = PK;
   const double half_diagonal = rectangle.half_diagonal();
   double margin_across = margin;
   auto corners = rectangle.corners(margin, margin_across);
@@ -63,7 +64,8 @@ corners_off_lines(const Enclosing_rectangle_2& rectangle, double margin, const s
       for(const auto& c : segments) {
         const double dx = c[2] - c[0], dy = c[3] - c[1];
         if(std::abs(dx * (q[1] - c[1]) - dy * (q[0] - c[0])) <= 1e-6 * half_diagonal * std::hypot(dx, dy) &&
-           CGAL::orientation(K::Point_2(c[0], c[1]), K::Point_2(c[2], c[3]), K::Point_2(q[0], q[1])) != CGAL::COLLINEAR)
+           CGAL::orientation(typename K::Point_2(c[0], c[1]), typename K::Point_2(c[2], c[3]),
+                             typename K::Point_2(q[0], q[1])) != CGAL::COLLINEAR)
           return true;
       }
     return false;
@@ -75,16 +77,17 @@ corners_off_lines(const Enclosing_rectangle_2& rectangle, double margin, const s
   return {corners, margin_across};
 }
 
-inline Enclosing_rectangle_2 enclosing_rectangle(const std::vector<std::array<double, 2>>& points)
+template <class PK>
+Enclosing_rectangle_2 enclosing_rectangle(const std::vector<std::array<double, 2>>& points)
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  std::vector<K::Point_2> p, hull;
+  using K = PK;
+  std::vector<typename K::Point_2> p, hull;
   p.reserve(points.size());
   for(const auto& q : points) p.emplace_back(q[0], q[1]);
   CGAL::convex_hull_2(p.begin(), p.end(), std::back_inserter(hull));
   Enclosing_rectangle_2 r;
   if(hull.size() >= 3) {
-    std::vector<K::Point_2> c;
+    std::vector<typename K::Point_2> c;
     CGAL::min_rectangle_2(hull.begin(), hull.end(), std::back_inserter(c));
     const double dx = c[1].x() - c[0].x(), dy = c[1].y() - c[0].y(), n = std::hypot(dx, dy);
     const double m = std::hypot(c[2].x() - c[1].x(), c[2].y() - c[1].y());

@@ -14,7 +14,8 @@
 // stop each other): the corners of a footprint stay corners. A ray can be released from this
 // rule (see `release()`): it then goes on from its origin, by the other rules.
 //
-// Exactness: intersection points and arrival times are exact (lazy exact kernel); events are
+// Exactness: intersection points and arrival times are exact (`EK`, the exact constructions
+// kernel of the geometric traits, lazy by default); events are
 // processed in exact time order (candidates are found in double precision, and candidates
 // of a ray whose double parameters are close are ordered exactly). The result is the final
 // extent of every segment.
@@ -32,7 +33,6 @@
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
 #include <boost/variant/get.hpp>
@@ -50,12 +50,17 @@ namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
 
+template <class ExactKernel>
 class Kinetic_propagation_2
 {
 public:
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-  using FT = EK::FT;
-  using Point = EK::Point_2;
+  using EK = ExactKernel;
+  using FT = typename EK::FT;
+  using Point = typename EK::Point_2;
+  using Segment = typename EK::Segment_2;
+  using Line = typename EK::Line_2;
+  using Vector = typename EK::Vector_2;
+  using Direction = typename EK::Direction_2;
 
   struct Statistics
   {
@@ -66,7 +71,7 @@ public:
 
   // `segments`: exact, non-degenerate, pairwise distinct; `box`: the 4 corners of a convex
   // rectangle, counterclockwise, containing every segment strictly inside.
-  Kinetic_propagation_2(const std::vector<EK::Segment_2>& segments, const std::array<Point, 4>& box,
+  Kinetic_propagation_2(const std::vector<Segment>& segments, const std::array<Point, 4>& box,
                         std::size_t maximum_crossings, double crossing_distance)
     : segments_(segments), maximum_crossings_(maximum_crossings),
       crossing_distance_(crossing_distance)
@@ -94,10 +99,10 @@ public:
     // parallel classes: segments sorted by their exact direction (up to orientation), so
     // that testing two segments for parallelism is comparing two integers
     {
-      std::vector<EK::Direction_2> directions;
+      std::vector<Direction> directions;
       directions.reserve(n);
       for(const auto& s : segments) {
-        EK::Vector_2 d = s.target() - s.source();
+        Vector d = s.target() - s.source();
         const CGAL::Sign sx = CGAL::sign(d.x());
         if(sx == CGAL::NEGATIVE || (sx == CGAL::ZERO && CGAL::sign(d.y()) == CGAL::NEGATIVE)) d = -d;
         directions.emplace_back(d);
@@ -111,7 +116,7 @@ public:
         parallel_class_[order[k]] = parallel_class_[order[k - 1]] +
                                     (directions[order[k - 1]] == directions[order[k]] ? 0 : 1);
     }
-    for(int k = 0; k < 4; ++k) box_[k] = EK::Line_2(box[k], box[(k + 1) % 4]);
+    for(int k = 0; k < 4; ++k) box_[k] = Line(box[k], box[(k + 1) % 4]);
     rays_.resize(2 * n);
     released_.assign(2 * n, false);
     for(std::size_t r = 0; r < rays_.size(); ++r) {
@@ -124,7 +129,7 @@ public:
       // exit parameter through the rectangle: the smallest positive one over its sides
       bool found = false;
       for(int k = 0; k < 4; ++k) {
-        const EK::Line_2& side = box_[k];
+        const Line& side = box_[k];
         const FT den = side.a() * ray.direction.x() + side.b() * ray.direction.y();
         // the inside is on the left of a counterclockwise side: leaving it means den < 0
         if(CGAL::sign(den) != CGAL::NEGATIVE) continue;
@@ -167,9 +172,9 @@ public:
   }
 
   // final extent of segment i
-  EK::Segment_2 extent(std::size_t i) const
+  Segment extent(std::size_t i) const
   {
-    return EK::Segment_2(rays_[2 * i].stop, rays_[2 * i + 1].stop);
+    return Segment(rays_[2 * i].stop, rays_[2 * i + 1].stop);
   }
 
   const Statistics& statistics() const { return statistics_; }
@@ -190,7 +195,7 @@ private:
   struct Ray
   {
     Point origin;
-    EK::Vector_2 direction;
+    Vector direction;
     double direction_length = 0;
     FT box_parameter;
     int box_side = 0; // the side of the rectangle at `box_parameter`
@@ -229,7 +234,7 @@ private:
   FT exact_parameter(const Ray& ray, std::uint32_t segment) const
   {
     if(segment == box_candidate) return ray.box_parameter;
-    const EK::Line_2& l = lines_[segment];
+    const Line& l = lines_[segment];
     const FT den = l.a() * ray.direction.x() + l.b() * ray.direction.y();
     return -(l.a() * ray.origin.x() + l.b() * ray.origin.y() + l.c()) / den;
   }
@@ -392,7 +397,7 @@ private:
   // arithmetic operations, each evaluated and synchronized on its own.
   Point meeting_point(std::size_t r, std::uint32_t segment) const
   {
-    const EK::Line_2& other = segment == box_candidate ? box_[rays_[r].box_side] : lines_[segment];
+    const Line& other = segment == box_candidate ? box_[rays_[r].box_side] : lines_[segment];
     const auto x = CGAL::intersection(lines_[r / 2], other);
     const Point* p = x ? boost::get<Point>(&*x) : nullptr;
     CGAL_assertion(p != nullptr); // parallel candidates are skipped
@@ -408,7 +413,7 @@ private:
   bool covers(std::size_t j, const Point& I, const FT& t2, std::size_t r) const
   {
     const auto& s = segments_[j];
-    const EK::Vector_2 d = s.target() - s.source();
+    const Vector d = s.target() - s.source();
     const bool before_source = CGAL::sign((I - s.source()) * d) == CGAL::NEGATIVE;
     const bool after_target = CGAL::sign((I - s.target()) * d) == CGAL::POSITIVE;
     if(!before_source && !after_target) return true; // on the initial segment
@@ -475,14 +480,14 @@ private:
     return (std::max(next, head.parameter) - head.parameter) * ray.direction_length < crossing_distance_;
   }
 
-  const std::vector<EK::Segment_2>& segments_;
-  std::vector<EK::Line_2> lines_;
+  const std::vector<Segment>& segments_;
+  std::vector<Line> lines_;
   std::vector<std::array<double, 4>> double_segments_; // endpoints, rounded to double
   Segment_grid_2 grid_{{}, {{0, 0}}, {{1, 1}}};        // the segments, by position
   std::vector<std::uint32_t> visited_;                 // stamp of the last refill that saw a segment
   std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> parallel_class_; // equal for parallel segments
-  std::array<EK::Line_2, 4> box_;
+  std::array<Line, 4> box_;
   std::vector<Ray> rays_;
   std::vector<bool> released_;
   std::priority_queue<Queued, std::vector<Queued>, Later> queue_;

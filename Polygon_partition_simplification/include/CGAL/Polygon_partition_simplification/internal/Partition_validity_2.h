@@ -24,15 +24,21 @@
 // state) passes `may_cross(a, b)`, false for the segment from a to b if it is one of them:
 // step 3 then only tests the pairs with an edge for which it is true (or that joins the same
 // two points as another edge).
+//
+// The predicates are those of `PK`, the exact predicates kernel of the geometric traits (double
+// coordinates, exact predicates); the exact fallback of the area of a walk is computed in `ET`,
+// the exact number type of its exact constructions kernel.
 
 #include <CGAL/Polygon_partition_simplification/internal/First_value_map.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
 
+#include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
+
 #include <CGAL/Bbox_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Exact_rational.h>
+#include <CGAL/Kernel/global_functions_2.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <array>
@@ -143,15 +149,16 @@ struct Core_rectangle
 // common end, among the pairs with an edge for which `may_cross(a, b)` (its ends' coordinates)
 // is true; stops at a pair found (whichever the search meets first) unless `all`. `points`:
 // the coordinates (finite for the ends of every edge given).
-template <class MayCross>
+template <class PK, class MayCross>
 std::vector<std::pair<std::size_t, std::size_t>>
 crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
                     const std::vector<std::array<std::size_t, 2>>& edges, bool all, const MayCross& may_cross)
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Point = typename PK::Point_2;
+  using Segment = typename PK::Segment_2;
   std::vector<std::pair<std::size_t, std::size_t>> result;
   if(edges.empty()) return result;
-  auto point = [&](std::size_t v) { return K::Point_2(points[v][0], points[v][1]); };
+  auto point = [&](std::size_t v) { return Point(points[v][0], points[v][1]); };
   std::vector<std::array<double, 4>> segments(edges.size());
   std::vector<CGAL::Bbox_2> boxes(edges.size());
   for(std::size_t e = 0; e < edges.size(); ++e) {
@@ -183,15 +190,15 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
     for(std::size_t a : e)
       for(std::size_t b : f)
         if(a == b) { ++common; shared = a; }
-    if(common == 0) return CGAL::do_intersect(K::Segment_2(point(e[0]), point(e[1])), K::Segment_2(point(f[0]), point(f[1])));
+    if(common == 0) return CGAL::do_intersect(Segment(point(e[0]), point(e[1])), Segment(point(f[0]), point(f[1])));
     if(common == 2) return true;
     // They share an end s and must not overlap, which they do exactly when they leave s in the
     // same direction: collinear, with other ends on the same side of s. The side is tested first:
     // consecutive edges along a line leave s in opposite directions, which the filtered sign of
     // (oe - s).(of - s) decides at once, whereas their orientation, nearly zero, needs the exact
     // arithmetic (the ends are distinct points: partition_defect checks it before).
-    const K::Point_2 s = point(shared);
-    const K::Point_2 oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
+    const Point s = point(shared);
+    const Point oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
     return CGAL::angle(oe, s, of) == CGAL::ACUTE && CGAL::orientation(s, oe, of) == CGAL::COLLINEAR;
   };
   // Two edges that meet share a point, which lies in a cell where both are listed: each suspect
@@ -245,8 +252,8 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
 // Whether the facial walk from half-edge `start` turns clockwise (negative area): the walks of
 // the bounded faces turn counterclockwise, the outer boundary of each connected part clockwise.
 // The area is summed in double with an error bound, and again exactly when the bound does not
-// decide.
-template <class Source, class Target, class Next>
+// decide (in `ET`, an exact field number type).
+template <class ET, class Source, class Target, class Next>
 bool is_clockwise_walk(const std::vector<std::array<double, 2>>& points, std::size_t start, const Source& source,
                        const Target& target, const Next& next)
 {
@@ -267,7 +274,7 @@ bool is_clockwise_walk(const std::vector<std::array<double, 2>>& points, std::si
   const double bound = double(terms + 4) * 4 * std::numeric_limits<double>::epsilon() * magnitude;
   if(twice_area < -bound) return true;
   if(twice_area > bound) return false;
-  using FT = CGAL::Exact_rational;
+  using FT = ET;
   FT exact = 0;
   h = start;
   do {
@@ -286,6 +293,7 @@ bool is_clockwise_walk(const std::vector<std::array<double, 2>>& points, std::si
 // boundary (clockwise walk) of their part; the others (between two cells, or dangling, or
 // bridging, with one face on both sides) would spoil the parity: a point in the left cell of a
 // square cut in two crosses the middle edge and the right side. Built when first needed.
+template <class PK>
 class Part_containment
 {
 public:
@@ -301,8 +309,8 @@ public:
 
   bool lies_in_another_part(std::size_t v)
   {
-    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-    const K::Point_2 p(points_[v][0], points_[v][1]);
+    using Point = typename PK::Point_2;
+    const Point p(points_[v][0], points_[v][1]);
     touched_.clear();
     for(std::size_t i = 0; i < edges_.size(); ++i) {
       if(!on_outer_boundary_[i]) continue;
@@ -315,7 +323,7 @@ public:
       // the edge goes across the line y = p.y: does it cross it to the right of p?
       const auto& low = a[1] < b[1] ? a : b;
       const auto& high = a[1] < b[1] ? b : a;
-      if(CGAL::orientation(K::Point_2(low[0], low[1]), K::Point_2(high[0], high[1]), p) != CGAL::LEFT_TURN) continue;
+      if(CGAL::orientation(Point(low[0], low[1]), Point(high[0], high[1]), p) != CGAL::LEFT_TURN) continue;
       odd_[part] = !odd_[part];
       touched_.push_back(part);
     }
@@ -342,12 +350,13 @@ private:
 // cells tile the rectangle exactly when there is none (a cell that went out through a side,
 // or a point on a side sent past a corner, puts its edges there, although no edges need to
 // cross).
-inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points,
-                                const std::vector<std::array<std::size_t, 2>>& edges,
-                                std::vector<std::size_t>& bridges, std::vector<std::size_t>& pinched,
-                                const std::vector<bool>& on_side = {}, std::vector<std::size_t>* outside = nullptr)
+template <class PK, class ET>
+void facial_walk_defects(const std::vector<std::array<double, 2>>& points,
+                         const std::vector<std::array<std::size_t, 2>>& edges,
+                         std::vector<std::size_t>& bridges, std::vector<std::size_t>& pinched,
+                         const std::vector<bool>& on_side = {}, std::vector<std::size_t>* outside = nullptr)
 {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Point = typename PK::Point_2;
   const std::size_t nv = points.size(), nh = 2 * edges.size();
   // half-edge h = 2e + s goes from edges[e][s] to edges[e][1 - s]
   auto source = [&](std::size_t h) { return edges[h / 2][h % 2]; };
@@ -363,7 +372,7 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   // counterclockwise order around each point, from the direction of the positive x axis
   // (exact: coordinate comparisons and orientation predicates on the double points)
   for(std::size_t v = 0; v < nv; ++v) {
-    const K::Point_2 p(points[v][0], points[v][1]);
+    const Point p(points[v][0], points[v][1]);
     auto upper = [&](std::size_t h) { // direction in [0, pi)
       const auto& q = points[target(h)];
       return q[1] > points[v][1] || (q[1] == points[v][1] && q[0] > points[v][0]);
@@ -373,7 +382,7 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
       if(ua != ub) return ua;
       const auto& qa = points[target(a)];
       const auto& qb = points[target(b)];
-      return CGAL::orientation(p, K::Point_2(qa[0], qa[1]), K::Point_2(qb[0], qb[1])) == CGAL::LEFT_TURN;
+      return CGAL::orientation(p, Point(qa[0], qa[1]), Point(qb[0], qb[1])) == CGAL::LEFT_TURN;
     });
   }
   std::vector<std::uint32_t> position(nh);
@@ -419,10 +428,10 @@ inline void facial_walk_defects(const std::vector<std::array<double, 2>>& points
   // first needed, and the containment test on them.
   std::vector<signed char> clockwise(walks, -1);
   auto is_clockwise = [&](std::uint32_t k) {
-    if(clockwise[k] < 0) clockwise[k] = is_clockwise_walk(points, walk_start[k], source, target, next) ? 1 : 0;
+    if(clockwise[k] < 0) clockwise[k] = is_clockwise_walk<ET>(points, walk_start[k], source, target, next) ? 1 : 0;
     return clockwise[k] == 1;
   };
-  std::optional<Part_containment> parts;
+  std::optional<Part_containment<PK>> parts;
   auto lies_in_another_part = [&](std::size_t v) {
     if(!parts) {
       std::vector<bool> on_outer_boundary(edges.size());
@@ -467,10 +476,13 @@ std::size_t number_of_bounded_faces(std::size_t number_of_points, const Edges& e
 // The first defect of a partition (empty if it is valid); with `defective`, the edges of all
 // defects of the first kind found (sorted, distinct). `View` gives number_of_lines(),
 // coefficients(l), number_of_vertices(), vertex_lines(v) (sorted indices), number_of_edges()
-// and edge(e) = {line, u, v}; `may_cross(a, b)`: see above.
-template <class View, class MayCross>
+// and edge(e) = {line, u, v}; `may_cross(a, b)`: see above. `GeomTraits`: a model of
+// `PolygonPartitionSimplificationTraits_2`, whose kernels give the predicates.
+template <class GeomTraits, class View, class MayCross>
 std::string partition_defect(const View& view, std::vector<std::size_t>* defective, const MayCross& may_cross)
 {
+  using PK = typename GeomTraits::Exact_predicates_kernel;
+  using ET = Exact_number<typename GeomTraits::Exact_constructions_kernel>;
   const std::size_t nl = view.number_of_lines(), nv = view.number_of_vertices(), ne = view.number_of_edges();
   std::string first;
   auto finish = [&](std::string what) {
@@ -551,7 +563,7 @@ std::string partition_defect(const View& view, std::vector<std::size_t>* defecti
       }
   }
   if(!first.empty()) return finish(first); // the walks need distinct points
-  const auto crossings = crossing_edge_pairs(points, ends, defective != nullptr, may_cross);
+  const auto crossings = crossing_edge_pairs<PK>(points, ends, defective != nullptr, may_cross);
   if(!crossings.empty()) {
     if(defective)
       for(const auto& [e, f] : crossings) { defective->push_back(e); defective->push_back(f); }
@@ -566,7 +578,7 @@ std::string partition_defect(const View& view, std::vector<std::size_t>* defecti
       for(std::size_t e = 0; e < ne; ++e) on_side[e] = view.is_fixed(view.edge(e)[0]);
       break;
     }
-  facial_walk_defects(points, ends, bridges, pinched, on_side, &outside);
+  facial_walk_defects<PK, ET>(points, ends, bridges, pinched, on_side, &outside);
   if(!outside.empty()) {
     if(defective) defective->insert(defective->end(), outside.begin(), outside.end());
     if(report("the cells do not tile the bounding rectangle: an edge off its sides bounds the "

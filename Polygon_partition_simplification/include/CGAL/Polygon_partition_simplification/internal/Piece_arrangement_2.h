@@ -12,7 +12,6 @@
 // collinear edges meet).
 
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
-#include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
@@ -30,26 +29,31 @@ namespace Polygon_partition_simplification {
 namespace internal {
 
 // The data of a curve: the index of its line (overlapping pieces are on one line, so the data
-// of an edge is that line, whichever pieces overlap there).
-using Piece_traits = CGAL::Arr_consolidated_curve_data_traits_2<CGAL::Arr_segment_traits_2<Exact_kernel>, std::size_t>;
-using Piece_arrangement = CGAL::Arrangement_2<Piece_traits>;
+// of an edge is that line, whichever pieces overlap there). `EK`: the exact constructions kernel
+// of the geometric traits.
+template <class EK>
+using Piece_traits = CGAL::Arr_consolidated_curve_data_traits_2<CGAL::Arr_segment_traits_2<EK>, std::size_t>;
+template <class EK>
+using Piece_arrangement = CGAL::Arrangement_2<Piece_traits<EK>>;
 
 // The graph of an arrangement: its vertices, and its edges with their line and whether they
 // still bound a cell (`alive`).
+template <class EK>
 struct Piece_graph
 {
   struct Edge { std::size_t u, v, line; bool alive; };
-  std::vector<Piece_arrangement::Vertex_const_handle> vertices;
+  std::vector<typename Piece_arrangement<EK>::Vertex_const_handle> vertices;
   std::vector<Edge> edges;
   std::vector<std::vector<std::size_t>> incident; // per vertex, its edges (alive or not)
 };
 
 // The graph of `arrangement`; an edge with the same face on both sides (a bridge or an antenna)
 // bounds no cell and is not alive.
-inline Piece_graph piece_graph(const Piece_arrangement& arrangement)
+template <class EK>
+Piece_graph<EK> piece_graph(const Piece_arrangement<EK>& arrangement)
 {
-  Piece_graph g;
-  std::map<Piece_arrangement::Vertex_const_handle, std::size_t> vertex_index;
+  Piece_graph<EK> g;
+  std::map<typename Piece_arrangement<EK>::Vertex_const_handle, std::size_t> vertex_index;
   for(auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v) {
     vertex_index.emplace(v, g.vertices.size());
     g.vertices.push_back(v);
@@ -65,7 +69,8 @@ inline Piece_graph piece_graph(const Piece_arrangement& arrangement)
 }
 
 // Kills the edges that dangle: repeatedly, the alive edge at a vertex with one alive edge.
-inline void prune_dangling_edges(Piece_graph& g)
+template <class EK>
+void prune_dangling_edges(Piece_graph<EK>& g)
 {
   std::vector<std::size_t> degree(g.incident.size());
   std::vector<std::size_t> stack;
@@ -98,8 +103,8 @@ struct Points_and_edges
 // sorted line sets, then of their exact coordinates, which does not depend on the order of the
 // input. Edges: the chains of alive edges from a point to the next through vertices on a
 // single line, sorted by (line, points). Throws Input_error (NO_CELL) when there is none.
-template <class Partition>
-Points_and_edges<Partition> points_and_chained_edges(const Piece_graph& g)
+template <class Partition, class EK>
+Points_and_edges<Partition> points_and_chained_edges(const Piece_graph<EK>& g)
 {
   const std::size_t n = g.incident.size();
   std::vector<std::vector<std::size_t>> vertex_lines(n);

@@ -22,13 +22,15 @@ namespace internal {
 
 // A round on `w`, which must be valid and is replaced by the (valid) result. `changed`: the
 // lines that the previous round changed (empty for the first round: every line moves);
-// `iterations`: the gradient steps made so far, incremented by those of the descent.
-inline Round_reductions simplification_round(Working_partition& w, const std::vector<bool>& changed,
+// `iterations`: the gradient steps made so far, incremented by those of the descent. The validity
+// is checked with the predicates of `GeomTraits`.
+template <class GeomTraits>
+Round_reductions simplification_round(Working_partition& w, const std::vector<bool>& changed,
                                              const Simplification_settings& s, std::size_t& iterations)
 {
   const Working_partition start = w;
   const std::vector<Vector_3d> moved = descend(w, changed, s, iterations);
-  Round_reductions result = reduce_until_valid(w, start, moved, s.thresholds);
+  Round_reductions result = reduce_until_valid<GeomTraits>(w, start, moved, s.thresholds);
   // the next round starts with no line frozen and no record of the merges of this one
   for(auto& l : w.lines) { l.is_frozen = false; l.members.clear(); }
   return result;

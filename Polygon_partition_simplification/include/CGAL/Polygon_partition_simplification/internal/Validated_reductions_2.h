@@ -169,8 +169,10 @@ private:
 
 // The reductions of a round on `w`, from the round's start `start` (valid) and the coefficients
 // of its descent `moved`: attempts with more and more lines frozen until the result is valid and
-// free of conflicts; `w` is that result, or `start` when the round is undone.
-inline Round_reductions reduce_until_valid(Working_partition& w, const Working_partition& start,
+// free of conflicts; `w` is that result, or `start` when the round is undone. The validity is
+// checked with the predicates of `GeomTraits` (see partition_defect()).
+template <class GeomTraits>
+Round_reductions reduce_until_valid(Working_partition& w, const Working_partition& start,
                                            const std::vector<Vector_3d>& moved, const Reduction_thresholds& thresholds)
 {
   Round_reductions result;
@@ -184,7 +186,7 @@ inline Round_reductions reduce_until_valid(Working_partition& w, const Working_p
     Partition_reducer reducer(w, thresholds);
     result.counts = reducer.run(start_edges.orientations);
     std::vector<std::size_t> defective;
-    const std::string defect = partition_defect(Working_partition_view{w}, &defective, may_cross);
+    const std::string defect = partition_defect<GeomTraits>(Working_partition_view{w}, &defective, may_cross);
     if(defect.empty() && reducer.conflicts().empty()) break;
     ++result.rejected_attempts;
     if(!freezing.freeze_after_rejection(w, reducer.conflicts(), defective)) {

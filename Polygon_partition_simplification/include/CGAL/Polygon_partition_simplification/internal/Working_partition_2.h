@@ -82,10 +82,11 @@ Working_partition working_partition(const Line_partition_2<GeomTraits>& partitio
 }
 
 // The `Line_partition_2` of `w` in the normalized frame `frame`, with the lines, points and edges
-// in the same order.
+// in the same order, and the geometric traits `gt`.
 template <class GeomTraits>
 Line_partition_2<GeomTraits> line_partition(const Working_partition& w,
-                                            const typename Line_partition_2<GeomTraits>::Frame& frame)
+                                            const typename Line_partition_2<GeomTraits>::Frame& frame,
+                                            const typename Line_partition_2<GeomTraits>::Geom_traits& gt)
 {
   using Partition = Line_partition_2<GeomTraits>;
   std::vector<typename Partition::Line> lines;
@@ -101,7 +102,7 @@ Line_partition_2<GeomTraits> line_partition(const Working_partition& w,
   for(const auto& v : w.vertex_lines) vertices.push_back({std::vector<std::size_t>(v.begin(), v.end())});
   std::vector<typename Partition::Edge> edges;
   for(const auto& e : w.edges) edges.push_back({e[0], e[1], e[2]});
-  return Partition(frame, std::move(lines), std::move(vertices), std::move(edges));
+  return Partition(frame, std::move(lines), std::move(vertices), std::move(edges), gt);
 }
 
 // The number of cells of `w`, which must be valid: a valid partition is a plane graph, whose

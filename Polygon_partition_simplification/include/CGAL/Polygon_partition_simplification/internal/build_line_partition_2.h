@@ -19,7 +19,6 @@
 #include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
 
 #include <CGAL/Arrangement_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
 #include <array>
@@ -27,6 +26,7 @@
 #include <cstddef>
 #include <map>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -34,9 +34,11 @@ namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
 
+// A segment of `EK`, the exact constructions kernel of the geometric traits.
+template <class EK>
 struct Exact_piece
 {
-  Exact_kernel::Segment_2 segment;
+  typename EK::Segment_2 segment;
   bool is_fixed = false; // a side of a kinetic bounding box
   // When known, the index of the piece's line among the lines given to
   // build_line_partition() (`group_lines`): pieces with the same index are on that line.
@@ -47,13 +49,15 @@ struct Exact_piece
 // no coefficient overflows: b/a of a nearly horizontal line can be beyond the doubles), in the
 // exact number type directly: every line's exact equation is needed (for the nearest doubles
 // of its coefficients), and through the lazy kernel each of its operations would be a node of
-// its own, evaluated (and, with threads, synchronized) on its own.
+// its own, evaluated (and, with threads, synchronized) on its own. `ET`: the exact number type of
+// the exact constructions kernel (behind its lazy number type, if it is lazy).
+template <class ET>
 struct Line_key
 {
   bool divided_by_b; // |a| < |b|: the key is (u, 1, v) = (a, b, c) / b, else (1, u, v) = (a, b, c) / a
-  Exact_number u, v;
+  ET u, v;
 
-  Line_key(const Exact_number& a, const Exact_number& b, const Exact_number& c)
+  Line_key(const ET& a, const ET& b, const ET& c)
   {
     divided_by_b = CGAL::compare(CGAL::abs(a), CGAL::abs(b)) == CGAL::SMALLER;
     if(divided_by_b) { u = a / b; v = c / b; }
@@ -61,8 +65,7 @@ struct Line_key
   }
   // the line through (x0, y0) and (x1, y1), which differ
   explicit Line_key(const std::array<double, 4>& c)
-    : Line_key(Exact_number(c[1]) - Exact_number(c[3]), Exact_number(c[2]) - Exact_number(c[0]),
-               Exact_number(c[0]) * Exact_number(c[3]) - Exact_number(c[2]) * Exact_number(c[1])) {}
+    : Line_key(ET(c[1]) - ET(c[3]), ET(c[2]) - ET(c[0]), ET(c[0]) * ET(c[3]) - ET(c[2]) * ET(c[1])) {}
   bool operator<(const Line_key& o) const
   {
     if(divided_by_b != o.divided_by_b) return divided_by_b < o.divided_by_b;
@@ -72,11 +75,12 @@ struct Line_key
   }
 };
 
-inline Line_key key_of(const Exact_kernel::Segment_2& s)
+template <class EK>
+Line_key<Exact_number<EK>> key_of(const typename EK::Segment_2& s)
 {
-  const Exact_kernel::Line_2 lazy(s.source(), s.target());
-  const auto& line = CGAL::exact(lazy); // a reference into `lazy`
-  return Line_key(line.a(), line.b(), line.c());
+  const typename EK::Line_2 lazy(s.source(), s.target());
+  const auto& line = exact_value<EK>(lazy); // a reference into `lazy`
+  return Line_key<Exact_number<EK>>(line.a(), line.b(), line.c());
 }
 
 // The lines of the pieces and of the metric segments of build_line_partition(), numbered in
@@ -93,27 +97,30 @@ struct Piece_lines
 // Keys are computed per piece, or once per group of pieces known to be on one line (from the
 // group's double endpoints in `group_lines`). Throws Input_error (EMPTY_INPUT) when there is
 // no line.
-template <class Line, class Frame>
-Piece_lines<Line> identify_lines(const std::vector<Exact_piece>& pieces, const std::vector<Exact_piece>& metric_segments,
-                                 const Frame& frame, const std::vector<std::array<double, 4>>& group_lines)
+template <class Line, class Frame, class EK>
+Piece_lines<Line> identify_lines(const std::vector<Exact_piece<EK>>& pieces,
+                                 const std::vector<Exact_piece<EK>>& metric_segments, const Frame& frame,
+                                 const std::vector<std::array<double, 4>>& group_lines)
 {
-  using Line_iterator = std::map<Line_key, std::size_t>::iterator;
-  std::map<Line_key, std::size_t> line_index;
+  using ET = Exact_number<EK>;
+  using Key = Line_key<ET>;
+  using Line_iterator = typename std::map<Key, std::size_t>::iterator;
+  std::map<Key, std::size_t> line_index;
   std::vector<Line_iterator> group_line(group_lines.size(), line_index.end());
-  auto line_of = [&](const Exact_piece& p) {
-    if(p.line_group == std::size_t(-1)) return line_index.emplace(key_of(p.segment), 0).first;
+  auto line_of = [&](const Exact_piece<EK>& p) {
+    if(p.line_group == std::size_t(-1)) return line_index.emplace(key_of<EK>(p.segment), 0).first;
     Line_iterator& it = group_line.at(p.line_group);
     if(it == line_index.end()) {
-      it = line_index.emplace(Line_key(group_lines[p.line_group]), 0).first;
+      it = line_index.emplace(Key(group_lines[p.line_group]), 0).first;
     }
     return it;
   };
   std::vector<Line_iterator> piece_line;
   piece_line.reserve(pieces.size());
-  for(const Exact_piece& p : pieces) piece_line.push_back(line_of(p));
+  for(const Exact_piece<EK>& p : pieces) piece_line.push_back(line_of(p));
   std::vector<Line_iterator> metric_line;
   metric_line.reserve(metric_segments.size());
-  for(const Exact_piece& s : metric_segments) metric_line.push_back(line_of(s));
+  for(const Exact_piece<EK>& s : metric_segments) metric_line.push_back(line_of(s));
   if(line_index.empty())
     throw Input_error(Input_error_code::EMPTY_INPUT, "the input has no edge");
   Piece_lines<Line> result;
@@ -123,9 +130,8 @@ Piece_lines<Line> identify_lines(const std::vector<Exact_piece>& pieces, const s
     Line line;
     // a x + b y + c = 0 in input coordinates becomes, in the normalized frame,
     // a x' + b y' + (a cx + b cy + c) / s = 0.
-    const Exact_number a = key.divided_by_b ? key.u : Exact_number(1), b = key.divided_by_b ? Exact_number(1) : key.u,
-                       c = key.v;
-    const Exact_number c_frame = (a * Exact_number(frame.center_x) + b * Exact_number(frame.center_y) + c) / Exact_number(frame.scale);
+    const ET a = key.divided_by_b ? key.u : ET(1), b = key.divided_by_b ? ET(1) : key.u, c = key.v;
+    const ET c_frame = (a * ET(frame.center_x) + b * ET(frame.center_y) + c) / ET(frame.scale);
     line.coefficients = normalized_line({double_of(a), double_of(b), double_of(c_frame)});
     result.lines.push_back(line);
   }
@@ -140,15 +146,15 @@ Piece_lines<Line> identify_lines(const std::vector<Exact_piece>& pieces, const s
 // are none (and from the fixed pieces always), added line by line in the order of their
 // (nearest double, normalized) endpoints, so that the sums, which are rounded, do not depend on
 // the order of the input.
-template <class Line, class Frame>
-void accumulate_metrics(std::vector<Line>& lines, const Frame& frame, const std::vector<Exact_piece>& pieces,
-                        const std::vector<std::size_t>& piece_line, const std::vector<Exact_piece>& metric_segments,
+template <class Line, class Frame, class EK>
+void accumulate_metrics(std::vector<Line>& lines, const Frame& frame, const std::vector<Exact_piece<EK>>& pieces,
+                        const std::vector<std::size_t>& piece_line, const std::vector<Exact_piece<EK>>& metric_segments,
                         const std::vector<std::size_t>& metric_line)
 {
   struct Metric_term { std::size_t line; std::array<double, 4> ends; };
   std::vector<Metric_term> terms;
-  auto add = [&](const Exact_kernel::Segment_2& s, std::size_t index) {
-    auto normalized = [&](const Exact_kernel::Point_2& p) {
+  auto add = [&](const typename EK::Segment_2& s, std::size_t index) {
+    auto normalized = [&](const typename EK::Point_2& p) {
       return std::array<double, 2>{(double_of(p.x()) - frame.center_x) / frame.scale,
                                    (double_of(p.y()) - frame.center_y) / frame.scale};
     };
@@ -176,7 +182,8 @@ void accumulate_metrics(std::vector<Line>& lines, const Frame& frame, const std:
 // position.
 template <class Partition>
 Partition canonical_partition(const typename Partition::Frame& frame, const std::vector<typename Partition::Line>& lines,
-                              std::vector<typename Partition::Vertex> vertices, std::vector<typename Partition::Edge> edges)
+                              std::vector<typename Partition::Vertex> vertices, std::vector<typename Partition::Edge> edges,
+                              const typename Partition::Geom_traits& gt)
 {
   std::vector<std::size_t> used_lines;
   {
@@ -216,7 +223,7 @@ Partition canonical_partition(const typename Partition::Frame& frame, const std:
   std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
     return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
   });
-  return Partition(frame, std::move(kept), std::move(sorted_vertices), std::move(edges));
+  return Partition(frame, std::move(kept), std::move(sorted_vertices), std::move(edges), gt);
 }
 
 // `metric_segments`: the segments the metrics of the lines are accumulated from (the pieces
@@ -226,22 +233,26 @@ Partition canonical_partition(const typename Partition::Frame& frame, const std:
 // lines (the ends of a kinetic extent, deep in the lazy kernel's expression DAG), would need
 // the exact evaluation of these endpoints (for pieces on the same line, whose keys are equal,
 // the interval filters never decide), the most expensive part of a kinetic partition.
-template <class GeomTraits>
+// `gt`: the geometric traits of the result, whose exact constructions kernel is `EK`.
+template <class GeomTraits, class EK>
 Line_partition_2<GeomTraits>
-build_line_partition(const std::vector<Exact_piece>& pieces,
-                     const std::vector<Exact_piece>& metric_segments,
+build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
+                     const std::vector<Exact_piece<EK>>& metric_segments,
                      const typename Line_partition_2<GeomTraits>::Frame& frame,
+                     const typename Line_partition_2<GeomTraits>::Geom_traits& gt,
                      const std::vector<std::array<double, 4>>& group_lines = {})
 {
   using Partition = Line_partition_2<GeomTraits>;
+  static_assert(std::is_same<EK, typename Partition::Geom_traits::Exact_constructions_kernel>::value,
+                "the pieces are in the exact constructions kernel of the geometric traits");
   // 1. The supporting lines, identified exactly: collinear pieces share one line.
   Piece_lines<typename Partition::Line> lines =
     identify_lines<typename Partition::Line>(pieces, metric_segments, frame, group_lines);
   // 2. The exact arrangement of the pieces, which finds every intersection and merges overlaps;
   //    each piece carries its line to its edges.
-  Piece_arrangement arrangement;
+  Piece_arrangement<EK> arrangement;
   {
-    std::vector<Piece_traits::Curve_2> curves;
+    std::vector<typename Piece_traits<EK>::Curve_2> curves;
     curves.reserve(pieces.size());
     for(std::size_t i = 0; i < pieces.size(); ++i)
       curves.emplace_back(pieces[i].segment, lines.piece_line[i]);
@@ -250,13 +261,13 @@ build_line_partition(const std::vector<Exact_piece>& pieces,
   // 3. The fidelity metrics of the lines.
   accumulate_metrics(lines.lines, frame, pieces, lines.piece_line, metric_segments, lines.metric_line);
   // 4. The points and edges of the arrangement that bound cells.
-  Piece_graph graph = piece_graph(arrangement);
+  Piece_graph<EK> graph = piece_graph(arrangement);
   prune_dangling_edges(graph);
   Points_and_edges<Partition> parts = points_and_chained_edges<Partition>(graph);
   // 5. Points whose double coordinates coincide, merged (see merge_rounded_points_2.h).
   merge_points_that_round_together(lines.lines, parts.vertices, parts.edges);
   // 6. Numbering independent of the input order and position.
-  return canonical_partition<Partition>(frame, lines.lines, std::move(parts.vertices), std::move(parts.edges));
+  return canonical_partition<Partition>(frame, lines.lines, std::move(parts.vertices), std::move(parts.edges), gt);
 }
 
 // The normalized frame of a set of points: center and half-diagonal of their smallest

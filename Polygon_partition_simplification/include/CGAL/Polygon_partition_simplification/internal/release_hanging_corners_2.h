@@ -34,9 +34,9 @@ namespace internal {
 // edge, by increasing distance, then index (the chain that hangs at a point of a defective edge
 // may have its corners farther along). A ray's origin is at a point when their coordinates
 // differ by at most `tolerance`.
-template <class Partition>
+template <class Partition, class Propagation>
 std::vector<std::size_t> hanging_corner_rays(const Partition& p, const std::vector<std::size_t>& defective,
-                                             const Kinetic_propagation_2& propagation, double tolerance)
+                                             const Propagation& propagation, double tolerance)
 {
   constexpr std::size_t maximum_distance = 3, unreached = std::size_t(-1);
   std::vector<std::vector<std::size_t>> neighbours(p.number_of_vertices());
@@ -76,18 +76,18 @@ std::vector<std::size_t> hanging_corner_rays(const Partition& p, const std::vect
 }
 
 // The kinetic partition, computed again with rays released while it has hanging corners (see
-// above). `make_propagation()` returns a new `Kinetic_propagation_2` of the segments;
+// above). `make_propagation()` returns a new `Kinetic_propagation_2<EK>` of the segments;
 // `partition_of(propagation)` builds the partition of a propagation that has run.
 template <class MakePropagation, class PartitionOf>
 auto propagate_releasing_hanging_corners(const MakePropagation& make_propagation, const PartitionOf& partition_of,
                                          double tolerance)
 {
-  auto run = [&](const std::vector<std::size_t>& released, Kinetic_propagation_2& propagation) {
+  auto run = [&](const std::vector<std::size_t>& released, auto& propagation) {
     for(std::size_t r : released) propagation.release(r);
     propagation.run();
     return partition_of(propagation);
   };
-  Kinetic_propagation_2 propagation = make_propagation();
+  auto propagation = make_propagation();
   auto partition = run({}, propagation); // not const: moved out when returned
   const std::vector<std::size_t> defective = partition.defective_edges();
   if(defective.empty()) return partition;
@@ -96,7 +96,7 @@ auto propagate_releasing_hanging_corners(const MakePropagation& make_propagation
   const std::vector<std::size_t> first_candidates = hanging_corner_rays(partition, defective, propagation, tolerance);
   for(std::size_t r : first_candidates) {
     if(runs == maximum_single_runs) break;
-    Kinetic_propagation_2 again = make_propagation();
+    auto again = make_propagation();
     auto released = run({r}, again);
     ++runs;
     if(released.is_valid()) return released;
@@ -109,7 +109,7 @@ auto propagate_releasing_hanging_corners(const MakePropagation& make_propagation
     });
     if(r == next.end()) break;
     released.push_back(*r);
-    Kinetic_propagation_2 again = make_propagation();
+    auto again = make_propagation();
     auto p = run(released, again);
     ++runs;
     const std::vector<std::size_t> d = p.defective_edges();

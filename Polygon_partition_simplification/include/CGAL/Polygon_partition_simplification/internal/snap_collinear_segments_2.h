@@ -20,7 +20,6 @@
 // the longer segments whose direction is close enough (sorted by angle): a segment of length
 // l with both endpoints within d of a line makes an angle of at most asin(2 d / l) with it.
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
 #include <boost/variant/get.hpp>
@@ -114,22 +113,23 @@ inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<do
 }
 
 // The exact segments of `input`, those of a group (`reference`, from collinear_groups())
-// moved onto the line of its longest segment (their endpoints projected on it).
-inline std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>
+// moved onto the line of its longest segment (their endpoints projected on it), in `EK`, a
+// kernel with exact constructions.
+template <class EK>
+std::vector<typename EK::Segment_2>
 snap_collinear_segments(const std::vector<std::array<double, 4>>& input, const std::vector<std::size_t>& reference)
 {
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-  std::vector<EK::Segment_2> result;
+  std::vector<typename EK::Segment_2> result;
   result.reserve(input.size());
-  for(const auto& c : input) result.emplace_back(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
+  for(const auto& c : input) result.emplace_back(typename EK::Point_2(c[0], c[1]), typename EK::Point_2(c[2], c[3]));
   for(std::size_t s = 0; s < input.size(); ++s) {
     if(reference[s] == s) continue;
     const auto& c = input[reference[s]];
-    const EK::Line_2 line(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
-    const EK::Point_2& p = result[s].source();
-    const EK::Point_2& q = result[s].target();
+    const typename EK::Line_2 line(typename EK::Point_2(c[0], c[1]), typename EK::Point_2(c[2], c[3]));
+    const typename EK::Point_2& p = result[s].source();
+    const typename EK::Point_2& q = result[s].target();
     if(line.has_on(p) && line.has_on(q)) continue;
-    result[s] = EK::Segment_2(line.projection(p), line.projection(q));
+    result[s] = typename EK::Segment_2(line.projection(p), line.projection(q));
   }
   return result;
 }
@@ -144,11 +144,10 @@ snap_collinear_segments(const std::vector<std::array<double, 4>>& input, const s
 // away from their common endpoints (the edges of an arrangement): a vertex lying inside another
 // edge would not move with it. Vertices are identified by their exact coordinates: rings that share a vertex stay
 // joined. Returns the number of edges moved onto the line of another; edges reduced to a point
-// are removed.
-inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact_constructions_kernel::Segment_2>& edges,
-                                        double distance)
+// are removed. `EK`: a kernel with exact constructions.
+template <class EK>
+std::size_t snap_collinear_edges(std::vector<typename EK::Segment_2>& edges, double distance)
 {
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
   std::vector<std::array<double, 4>> input;
   input.reserve(edges.size());
   for(const auto& e : edges)
@@ -158,12 +157,12 @@ inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact
   const std::size_t n = edges.size();
 
   // the vertices, and the edges at each
-  std::map<EK::Point_2, std::size_t> vertex_index;
-  std::vector<EK::Point_2> vertices;
+  std::map<typename EK::Point_2, std::size_t> vertex_index;
+  std::vector<typename EK::Point_2> vertices;
   std::vector<std::array<std::size_t, 2>> ends(n);
   for(std::size_t e = 0; e < n; ++e)
     for(int k = 0; k < 2; ++k) {
-      const EK::Point_2& p = k == 0 ? edges[e].source() : edges[e].target();
+      const typename EK::Point_2& p = k == 0 ? edges[e].source() : edges[e].target();
       auto [it, inserted] = vertex_index.emplace(p, vertices.size());
       if(inserted) vertices.push_back(p);
       ends[e][k] = it->second;
@@ -183,7 +182,7 @@ inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact
     };
     return key(a) < key(b);
   };
-  std::vector<EK::Point_2> placed;
+  std::vector<typename EK::Point_2> placed;
   for(;;) {
     // a group of one edge leaves its edge where it is (an edge given twice, by the two rings
     // it separates, is one edge)
@@ -209,7 +208,7 @@ inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact
       if(groups.empty()) continue;
       auto line_of = [&](std::size_t r) {
         const auto& c = input[r];
-        return EK::Line_2(EK::Point_2(c[0], c[1]), EK::Point_2(c[2], c[3]));
+        return typename EK::Line_2(typename EK::Point_2(c[0], c[1]), typename EK::Point_2(c[2], c[3]));
       };
       // the groups of the longest edges are kept: the vertex goes to the intersection of the
       // first two lines when it is close, else onto the first line; the others are dissolved
@@ -217,14 +216,14 @@ inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact
       std::size_t kept = 1;
       if(groups.size() >= 2) {
         const auto x = CGAL::intersection(line_of(groups[0]), line_of(groups[1]));
-        const EK::Point_2* p = x ? boost::get<EK::Point_2>(&*x) : nullptr;
+        const typename EK::Point_2* p = x ? boost::get<typename EK::Point_2>(&*x) : nullptr;
         if(p != nullptr && CGAL::to_double(CGAL::squared_distance(*p, vertices[v])) <= 16 * distance * distance) {
           placed[v] = *p;
           kept = 2;
         }
       }
       if(kept == 1) {
-        const EK::Line_2 l = line_of(groups[0]);
+        const typename EK::Line_2 l = line_of(groups[0]);
         if(!l.has_on(vertices[v])) placed[v] = l.projection(vertices[v]);
       }
       if(groups.size() > kept) {
@@ -237,12 +236,12 @@ inline std::size_t snap_collinear_edges(std::vector<CGAL::Exact_predicates_exact
       if(dissolved[reference[f]]) reference[f] = f;
   }
   std::size_t moved = 0;
-  std::vector<EK::Segment_2> result;
+  std::vector<typename EK::Segment_2> result;
   result.reserve(n);
   for(std::size_t e = 0; e < n; ++e) {
     if(reference[e] != e) ++moved;
-    const EK::Point_2& p = placed[ends[e][0]];
-    const EK::Point_2& q = placed[ends[e][1]];
+    const typename EK::Point_2& p = placed[ends[e][0]];
+    const typename EK::Point_2& q = placed[ends[e][1]];
     if(p != q) result.emplace_back(p, q);
   }
   edges.swap(result);
