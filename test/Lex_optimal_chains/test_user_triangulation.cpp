@@ -299,11 +299,46 @@ void test_open_surfaces(CGAL::Random& rng)
   assert(mesh.is_empty());
 }
 
+// The contraction runs on several threads from `minimum_cells_for_parallel_contraction`
+// cells: the chains must be the same, facet for facet and in the same order, as on one thread.
+void test_threads(CGAL::Random& rng)
+{
+  using DT = CGAL::Delaunay_triangulation_3<K>;
+  const std::vector<Point> points = sphere(rng, 40000, 0.02);
+  const DT dt(points.begin(), points.end());
+  assert(dt.number_of_cells() >= LOC::internal::minimum_cells_for_parallel_contraction);
+  std::vector<Oriented_triangle> closed[2];
+  for(unsigned threads : {1u, 2u}) {
+    std::vector<DT::Facet> facets;
+    const auto report = CGAL::lex_optimal_closed_surface(dt, std::back_inserter(facets),
+                                                         LOC::parameters::number_of_threads(threads));
+    for(const auto& f : facets) closed[threads - 1].push_back(triangle_of<DT>(f));
+    std::cout << "closed surface on " << threads << " thread(s): " << facets.size() << " facets, "
+              << report.number_of_exactly_ordered_triangles << " ordered exactly\n";
+  }
+  assert(!closed[0].empty() && closed[0] == closed[1]);
+
+  const std::vector<Point> terrain = height_field<Point>(rng, 40000, 0.02);
+  DT tdt(terrain.begin(), terrain.end());
+  const auto inserted = LOC::insert_boundary(tdt, std::vector<std::vector<Point>>{LOC::footprint_boundary(terrain)});
+  assert(tdt.number_of_cells() >= LOC::internal::minimum_cells_for_parallel_contraction);
+  std::vector<std::pair<Oriented_triangle, std::int64_t>> open[2];
+  for(unsigned threads : {1u, 2u}) {
+    std::vector<std::pair<DT::Facet, std::int64_t>> chain;
+    CGAL::lex_optimal_chain_with_boundary(tdt, inserted.edges, std::back_inserter(chain),
+                                          LOC::parameters::number_of_threads(threads));
+    for(const auto& fk : chain) open[threads - 1].emplace_back(triangle_of<DT>(fk.first), fk.second);
+    std::cout << "open surface on " << threads << " thread(s): " << chain.size() << " facets\n";
+  }
+  assert(!open[0].empty() && open[0] == open[1]);
+}
+
 int main()
 {
   CGAL::Random rng(7);
   test_closed_surfaces(rng);
   test_open_surfaces(rng);
+  test_threads(rng);
   std::cout << "OK\n";
   return 0;
 }

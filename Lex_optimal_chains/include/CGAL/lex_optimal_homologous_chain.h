@@ -62,6 +62,11 @@ twice has the sum of its coefficients
     \cgalParamType{`std::function<bool(double)>`}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{threads (with TBB) for the contraction of the cells across their largest facets, from 200,000 cells; the result does not depend on it}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
   \cgalParamNBegin{verbose}
     \cgalParamDescription{prints the stages and their timings to `std::cerr`}
     \cgalParamType{`bool`}

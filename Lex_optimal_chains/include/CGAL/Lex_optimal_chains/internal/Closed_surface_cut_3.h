@@ -71,7 +71,7 @@ public:
   template <class Progress>
   Contracted_dual_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells,
                           const std::vector<std::uint32_t>& sources, const std::vector<std::uint32_t>& sinks,
-                          const Progress& progress)
+                          const Progress& progress, unsigned threads = 1)
     : dt_(dt), cells_(cells), sets_(cells.size()), terminal_(cells.size(), false)
   {
     for(std::uint32_t s : sources) terminal_[s] = true;
@@ -83,7 +83,7 @@ public:
     // per cell): the few that are needed later are found again (`across()`).
     exact_comparisons_ = for_each_cell_across_largest_facet(
       dt, cells, terminal_, [this](std::uint32_t p, std::uint32_t q) { if(p != q) sets_.set_parent(p, q); },
-      half(0.0));
+      half(0.0), threads);
     sets_.set_forest_of_parents();
     for(std::uint32_t s : sinks) sink_root_ = sink_root_ == none ? sets_.find(s) : sets_.unite(sink_root_, s);
     for(std::uint32_t s : sources)

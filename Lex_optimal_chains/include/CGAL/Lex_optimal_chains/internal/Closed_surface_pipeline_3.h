@@ -128,7 +128,8 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   // the contraction of every cell with the cell across its largest facet, and the sorted
   // facets between the components (internal/Closed_surface_cut_3.h)
   Contracted_dual_graph_3<Triangulation> contracted(dt, cells, sources, sinks,
-                                                    Stage_progress{&callback, progress_from, progress_from + 0.6 * span});
+                                                    Stage_progress{&callback, progress_from, progress_from + 0.6 * span},
+                                                    choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::number_of_threads), 1u));
   const Graph& graph = contracted.graph(); // released after the cut
   report_order_statistics(contracted, watch.lap(), report);
   if(verbose)

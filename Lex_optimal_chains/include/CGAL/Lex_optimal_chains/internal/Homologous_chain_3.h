@@ -191,7 +191,8 @@ public:
   template <class Progress>
   Contracted_homologous_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells,
                                 const std::vector<std::uint32_t>& infinite_cells, const Record_values<Value>& gamma0,
-                                const Record_values<std::uint8_t>& relative, const Progress& progress)
+                                const Record_values<std::uint8_t>& relative, const Progress& progress,
+                                unsigned threads = 1)
     : sets_(cells.size())
   {
     const Value zero = Arithmetic::zero();
@@ -212,7 +213,7 @@ public:
       // the owner.
       exact_comparisons_ = for_each_cell_across_largest_facet(
         dt, cells, terminal, [this](std::uint32_t c, std::uint32_t d) { if(d != c) sets_.set_parent(c, d); },
-        half(0.0));
+        half(0.0), threads);
       sets_.set_forest_of_parents([&](std::uint32_t c, std::uint32_t d) {
         if(!gamma0.may_contain(c) && !gamma0.may_contain(d)) return zero; // no record of Gamma0 is theirs
         const std::pair<std::uint32_t, int> facet = Graph::facet_between(dt, cells, c, d);

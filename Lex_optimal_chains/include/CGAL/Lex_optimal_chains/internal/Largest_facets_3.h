@@ -30,7 +30,14 @@
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -313,17 +320,51 @@ int largest_facet(const Cell& c, std::size_t& exact)
   return Cell_facets_3(c).largest(exact);
 }
 
+// From this many cells, `for_each_cell_across_largest_facet()` runs on several threads when
+// it is given more than one: below, starting the threads costs more than it saves.
+constexpr std::size_t minimum_cells_for_parallel_contraction = 200000;
+
 // Calls `found(p, q)` for the cell at position `p` (in the numbering `cells` of the cell
-// container), in increasing p, with the position q of the cell across its largest facet, or
-// q = p for the cells with `terminal[p]` (they are not contracted) and the infinite cells.
-// Returns the number of comparisons made exactly. `progress(fraction)` returns false to cancel.
+// container) with the position q of the cell across its largest facet, or q = p for the cells
+// with `terminal[p]` (they are not contracted) and the infinite cells. Returns the number of
+// comparisons made exactly. `progress(fraction)` returns false to cancel; it is called from
+// the calling thread only. With `threads` > 1 (and TBB), the cells are handled by that many
+// threads, each p once, in no particular order: `found` must then be safe to call
+// concurrently for different p (the contractions write the parent of p only). The result is
+// the same for any number of threads: the largest facet of a cell depends on the cell alone.
 template <class Triangulation, class Found, class Progress>
 std::size_t for_each_cell_across_largest_facet(const Triangulation& dt,
                                                const Handle_index_map<typename Triangulation::Cell>& cells,
                                                const std::vector<bool>& terminal, const Found& found,
-                                               const Progress& progress)
+                                               const Progress& progress, unsigned threads = 1)
 {
   const auto infinite = dt.infinite_vertex();
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads > 1 && cells.size() >= minimum_cells_for_parallel_contraction) {
+    const std::uint32_t n = std::uint32_t(cells.size());
+    constexpr std::uint32_t chunk = 1u << 20; // cells between two calls of `progress`
+    std::atomic<std::size_t> exact{0};
+    tbb::task_arena arena(static_cast<int>(threads));
+    for(std::uint32_t begin = 0; begin < n; begin += (std::min)(chunk, n - begin)) {
+      if(!progress(double(begin) / double(n))) throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+      const std::uint32_t end = begin + (std::min)(chunk, n - begin);
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::uint32_t>(begin, end, 1u << 13),
+                          [&](const tbb::blocked_range<std::uint32_t>& range) {
+                            std::size_t local_exact = 0;
+                            for(std::uint32_t pos = range.begin(); pos != range.end(); ++pos) {
+                              const auto& c = *cells.element(pos);
+                              if(terminal[pos] || c.has_vertex(infinite)) found(pos, pos);
+                              else found(pos, cells.index(&*c.neighbor(largest_facet(c, local_exact))));
+                            }
+                            exact += local_exact;
+                          });
+      });
+    }
+    return exact;
+  }
+#endif
+  (void)threads;
   const auto& container = dt.tds().cells();
   std::size_t exact = 0;
   std::uint32_t pos = 0;

@@ -126,7 +126,8 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
   }
 
   Contracted_homologous_graph_3<Arithmetic, Triangulation> contracted(
-    dt, cells, infinite, gamma0, relative, Stage_progress{&callback, progress_from, progress_from + 0.7 * span});
+    dt, cells, infinite, gamma0, relative, Stage_progress{&callback, progress_from, progress_from + 0.7 * span},
+    parameters::choose_parameter(parameters::get_parameter(np, Lex_optimal_chains::internal_np::number_of_threads), 1u));
   report_order_statistics(contracted, watch.lap(), report);
   if(verbose)
     std::cerr << "Lex_optimal_chains: contracted the cells across their largest facets ("
