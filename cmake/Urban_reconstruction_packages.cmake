@@ -10,21 +10,24 @@ if(NOT CMAKE_CXX_STANDARD)
 endif()
 option(LEX_WITH_TBB "Use TBB for the parallel Delaunay triangulation when found" ON)
 
+# Release by default; the packages' code is warning-free with -Wall -Wextra (g++ 12); ccache
+# when present (build times matter on two cores).
+if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+endif()
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  add_compile_options(-Wall -Wextra)
+endif()
+find_program(CCACHE_PROGRAM ccache)
+if(CCACHE_PROGRAM)
+  set(CMAKE_CXX_COMPILER_LAUNCHER "${CCACHE_PROGRAM}")
+endif()
+
 # A test folder configured on its own (cmake -S test/<Pkg>), as CGAL's test suite does: the
-# tests are built, ctest runs them, with the warnings and ccache of the top level.
+# tests are built and ctest runs them.
 if(NOT URBAN_TOP_LEVEL)
   set(BUILD_TESTING ON CACHE BOOL "Build the tests (CGAL test-suite layout, run by ctest)")
   enable_testing()
-  if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
-    add_compile_options(-Wall -Wextra)
-  endif()
-  find_program(CCACHE_PROGRAM ccache)
-  if(CCACHE_PROGRAM)
-    set(CMAKE_CXX_COMPILER_LAUNCHER "${CCACHE_PROGRAM}")
-  endif()
-  if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
-    set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
-  endif()
 endif()
 
 find_package(CGAL 5.5 REQUIRED)
