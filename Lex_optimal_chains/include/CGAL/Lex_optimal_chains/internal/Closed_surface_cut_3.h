@@ -33,7 +33,6 @@
 #include <limits>
 #include <memory>
 #include <numeric>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
