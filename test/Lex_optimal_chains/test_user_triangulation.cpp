@@ -323,6 +323,26 @@ void test_threads(CGAL::Random& rng)
   }
   assert(!closed[0].empty() && closed[0] == closed[1]);
 
+  // the mesh, with the key pass, the radix sort and the reading of the surface on two threads
+  // too (each from 200,000 cells, records or facets): the same vertices and faces, in the same
+  // order
+  const std::vector<Point> big = sphere(rng, 110000, 0.002);
+  const DT big_dt(big.begin(), big.end());
+  Mesh meshes[2];
+  for(unsigned threads : {1u, 2u}) {
+    CGAL::lex_optimal_closed_surface_mesh(big_dt, meshes[threads - 1], LOC::parameters::number_of_threads(threads));
+    std::cout << "closed mesh on " << threads << " thread(s): " << meshes[threads - 1].number_of_faces() << " faces\n";
+  }
+  assert(meshes[0].number_of_faces() >= LOC::internal::Closed_surface_mesh_3<DT>::minimum_facets_for_parallel_reading);
+  assert(meshes[0].number_of_vertices() == meshes[1].number_of_vertices() &&
+         meshes[0].number_of_faces() == meshes[1].number_of_faces());
+  for(const auto v : meshes[0].vertices()) assert(meshes[0].point(v) == meshes[1].point(v));
+  for(const auto f : meshes[0].faces()) {
+    auto h0 = meshes[0].halfedge(f), h1 = meshes[1].halfedge(f);
+    for(int e = 0; e < 3; ++e, h0 = meshes[0].next(h0), h1 = meshes[1].next(h1))
+      assert(meshes[0].target(h0) == meshes[1].target(h1));
+  }
+
   const std::vector<Point> terrain = height_field<Point>(rng, 40000, 0.02);
   DT tdt(terrain.begin(), terrain.end());
   const auto inserted = LOC::insert_boundary(tdt, std::vector<std::vector<Point>>{LOC::footprint_boundary(terrain)});

@@ -9,7 +9,11 @@
 //                                              R times (default 1), and prints a table with
 //                                              the medians (ratios taken within a repetition);
 //                                              all on the lowest-numbered CPU allowed
-//   benchmark_closed_surface --one MODE N      one measurement (delaunay | lex | afsr), JSON
+//   benchmark_closed_surface --one MODE N [T]  one measurement (delaunay | lex | afsr), JSON;
+//                                              lex with T threads (default 1), on every CPU
+//
+// The table has the whole reconstruction on 2 threads (with TBB) against the Delaunay
+// triangulation on one thread ("total2/DT").
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -52,7 +56,7 @@ static std::vector<Point> noisy_torus(std::size_t n)
   return pts;
 }
 
-static int one(const std::string& mode, std::size_t n)
+static int one(const std::string& mode, std::size_t n, unsigned threads)
 {
   const std::vector<Point> pts = noisy_torus(n);
   const double base_mb = peak_rss_mb();
@@ -66,8 +70,10 @@ static int one(const std::string& mode, std::size_t n)
     json << ",\"delaunay_s\":" << t.time() << ",\"cells\":" << dt.number_of_cells();
   } else if(mode == "lex") {
     Mesh mesh;
+    if(threads > 1) allow_all_cpus();
     t.start();
-    const auto r = CGAL::lex_optimal_closed_surface_reconstruction(pts, mesh);
+    const auto r = CGAL::lex_optimal_closed_surface_reconstruction(
+      pts, mesh, CGAL::Lex_optimal_chains::parameters::number_of_threads(threads));
     t.stop();
     json << ",\"delaunay_s\":" << r.delaunay_seconds << ",\"order_s\":" << r.order_seconds
          << ",\"cut_s\":" << r.cut_seconds << ",\"resolution_s\":" << r.resolution_seconds
@@ -92,7 +98,8 @@ static int one(const std::string& mode, std::size_t n)
 
 int main(int argc, char** argv)
 {
-  if(argc == 4 && std::string(argv[1]) == "--one") return one(argv[2], std::stoul(argv[3]));
+  if((argc == 4 || argc == 5) && std::string(argv[1]) == "--one")
+    return one(argv[2], std::stoul(argv[3]), argc == 5 ? unsigned(std::stoul(argv[4])) : 1u);
   if(argc == 3 && std::string(argv[1]) == "--profile") { // one verbose reconstruction
     const std::vector<Point> pts = noisy_torus(std::stoul(argv[2]));
     Mesh mesh;
@@ -103,27 +110,28 @@ int main(int argc, char** argv)
   std::size_t repeat = 1;
   if(!parse_sizes(argc, argv, sizes, repeat)) {
     std::cerr << "usage: " << argv[0] << " [N ...] [--repeat R]   (medians of R runs of each measurement)\n"
-              << "       " << argv[0] << " --one MODE N | --profile N\n";
+              << "       " << argv[0] << " --one MODE N [THREADS] | --profile N\n";
     return 2;
   }
   if(sizes.empty()) sizes = {100000, 1000000};
   pin_measurements_to_one_cpu(); // the processes of the ratios on the same CPU
   std::cout << std::fixed << std::setprecision(3)
             << "points     delaunay_s  lex_total_s  order+cut_s  resolution_s  mesh_s  (order+cut)/DT  (order+cut+res+mesh)/DT"
-               "  mesh_us/point  total/DT  peakRSS_lex/DT  afsr_s  afsr/lex  resolved  split\n";
+               "  mesh_us/point  total/DT  total2/DT  peakRSS_lex/DT  afsr_s  afsr/lex  resolved  split\n";
   for(std::size_t n : sizes) {
     // the runs of one repetition follow each other: their ratios are taken before the medians
     std::vector<std::map<std::string, double>> ds, ls, as, rs;
     for(std::size_t k = 0; k < repeat; ++k) {
       auto d = run_child(std::string(argv[0]) + " --one delaunay " + std::to_string(n));
       auto l = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n));
+      auto l2 = run_child(std::string(argv[0]) + " --one lex " + std::to_string(n) + " 2");
       std::map<std::string, double> a;
       if(n <= 1000000) a = run_child(std::string(argv[0]) + " --one afsr " + std::to_string(n));
       const double dt = d["delaunay_s"], oc = l["order_s"] + l["cut_s"];
       const double after = oc + l["resolution_s"] + l["mesh_s"];
       std::map<std::string, double> r{{"order_cut_s", oc}, {"order_cut_dt", oc / dt}, {"after_dt", after / dt},
                                       {"mesh_us", 1e6 * (l["resolution_s"] + l["mesh_s"]) / double(n)},
-                                      {"total_dt", l["total_s"] / dt}, {"peak_dt", l["peak_rss_mb"] / d["peak_rss_mb"]}};
+                                      {"total_dt", l["total_s"] / dt}, {"total2_dt", l2["total_s"] / dt}, {"peak_dt", l["peak_rss_mb"] / d["peak_rss_mb"]}};
       if(a.count("total_s")) r["afsr_lex"] = a["total_s"] / l["total_s"];
       ds.push_back(d); ls.push_back(l); as.push_back(a); rs.push_back(r);
     }
@@ -131,7 +139,7 @@ int main(int argc, char** argv)
     std::cout << std::setw(9) << n << "  " << std::setw(10) << d["delaunay_s"] << "  " << std::setw(11) << l["total_s"] << "  "
               << std::setw(11) << r["order_cut_s"] << "  " << std::setw(12) << l["resolution_s"] << "  " << std::setw(6)
               << l["mesh_s"] << "  " << std::setw(14) << r["order_cut_dt"] << "  " << std::setw(23) << r["after_dt"] << "  "
-              << std::setw(13) << r["mesh_us"] << "  " << std::setw(8) << r["total_dt"] << "  " << std::setw(14) << r["peak_dt"] << "  ";
+              << std::setw(13) << r["mesh_us"] << "  " << std::setw(8) << r["total_dt"] << "  " << std::setw(9) << r["total2_dt"] << "  " << std::setw(14) << r["peak_dt"] << "  ";
     if(a.count("total_s")) std::cout << std::setw(6) << a["total_s"] << "  " << std::setw(8) << r["afsr_lex"];
     else std::cout << "     -         -";
     std::cout << "  " << std::setw(8) << l["resolved"] << "  " << std::setw(5) << l["split_vertices"];

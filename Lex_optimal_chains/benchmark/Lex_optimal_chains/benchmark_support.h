@@ -6,6 +6,7 @@
 #define LEX_OPTIMAL_CHAINS_BENCHMARK_SUPPORT_H
 
 #include <sched.h>
+#include <unistd.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -45,6 +46,17 @@ inline void pin_measurements_to_one_cpu()
       }
   if(pinned >= 0) std::cout << "all measurements on CPU " << pinned << "\n";
   else std::cout << "measurements not pinned to one CPU\n";
+}
+
+// Lets the calling process run on every online CPU again (a measurement on several threads,
+// started by a process pinned to one CPU).
+inline void allow_all_cpus()
+{
+  cpu_set_t all;
+  CPU_ZERO(&all);
+  const long online = sysconf(_SC_NPROCESSORS_ONLN);
+  for(long cpu = 0; cpu < online && cpu < CPU_SETSIZE; ++cpu) CPU_SET(int(cpu), &all);
+  sched_setaffinity(0, sizeof all, &all);
 }
 
 // Runs `command`, echoes its output to stderr and returns its numeric "key":value pairs.

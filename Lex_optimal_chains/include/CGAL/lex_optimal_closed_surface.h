@@ -78,7 +78,7 @@ swapped when `i` is odd, is oriented outward.
     \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads (with TBB) for the contraction of the cells across their largest facets, from 200,000 cells; the result does not depend on it}
+    \cgalParamDescription{threads (with TBB) for the contraction of the cells across their largest facets and for the keys and the sort of the triangles, from 200,000 cells; the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd
@@ -189,7 +189,7 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
     \cgalParamDefault{the kernel of the points (`CGAL::Kernel_traits`)}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower) and for the contraction of the dual graph (from 200,000 cells); the result does not depend on it}
+    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower) and for the contraction of the dual graph and the keys and the sort of its triangles (from 200,000 cells); the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd

@@ -63,7 +63,7 @@ twice has the sum of its coefficients
     \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads (with TBB) for the contraction of the cells across their largest facets, from 200,000 cells; the result does not depend on it}
+    \cgalParamDescription{threads (with TBB) for the contraction of the cells across their largest facets and for the keys and the sort of the triangles, from 200,000 cells; the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd

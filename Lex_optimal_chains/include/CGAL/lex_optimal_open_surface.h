@@ -81,7 +81,7 @@ disjoint, each edge oriented from a vertex to the next
     \cgalParamDefault{the kernel of the points (`CGAL::Kernel_traits`)}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower) and for the contraction of the dual graph (from 200,000 cells); the result does not depend on it}
+    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower) and for the contraction of the dual graph and the keys and the sort of its triangles (from 200,000 cells); the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd

@@ -52,7 +52,7 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(interior_points)
 /// Points outside the surface (a range of `Point_3`), added to the exterior constraint
 /// \f$\alpha_2\f$ (which always holds the infinite vertex).
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(exterior_points)
-/// Number of threads for the Delaunay triangulation (needs TBB); the result does not depend on it.
+/// Number of threads (needs TBB) for the Delaunay triangulation and the passes over its cells; the result does not depend on it.
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(number_of_threads)
 /// Smallest persistence ratio accepted for an automatically chosen interior.
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(minimum_interior_persistence)

@@ -92,7 +92,7 @@ public:
     if(source_root_ != none) source_root_ = sets_.find(source_root_);
     graph_.reset(new Graph(dt, cells, half(0.5), [this](std::uint32_t a, int, std::uint32_t b) {
       return sets_.find_in_flat(a) != sets_.find_in_flat(b);
-    }));
+    }, threads));
   }
 
   const Triangulation& triangulation() const { return dt_; }

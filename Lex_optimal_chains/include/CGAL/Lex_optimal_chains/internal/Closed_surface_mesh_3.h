@@ -15,6 +15,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Dense_numbers.h>
 #include <CGAL/Lex_optimal_chains/internal/Edge_groups.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Union_find.h>
@@ -57,6 +58,10 @@ public:
   using Cell = typename Triangulation::Cell;
   using Point = typename Triangulation::Point;
 
+  // From this many facets, the constructor reads them on several threads when it is given more
+  // than one.
+  static constexpr std::size_t minimum_facets_for_parallel_reading = 200000;
+
   // The key of facet i of the cell at position p in the cell numbering: 4 * p + i.
   static std::uint32_t facet_key(std::uint32_t cell_position, int i) { return (cell_position << 2) | std::uint32_t(i); }
 
@@ -67,8 +72,11 @@ public:
   // (the cut names a facet by the cell that owns its record, inside or not: naming it by its
   // inside cell would read the other cell, at random); `cells` numbers the cells and
   // `inside[cells.index(c)]` tells if a cell is inside; `vertex_positions` numbers the vertices.
+  // `threads`: the number of threads that read the triangulation (the surface is the same for
+  // any number).
   Closed_surface_mesh_3(std::vector<std::uint32_t>&& facet_keys, const Handle_index_map<Cell>& cells,
-                        const Handle_index_map<Vertex>& vertex_positions, const std::vector<bool>& inside)
+                        const Handle_index_map<Vertex>& vertex_positions, const std::vector<bool>& inside,
+                        unsigned threads = 1)
   {
     const std::size_t nf = facet_keys.size();
     CGAL_precondition(nf < (std::size_t(1) << 30));
@@ -90,7 +98,9 @@ public:
     }
     const Triangulation_reader reader{keys_, cells, vertex_positions, inside};
     corners_.resize(3 * nf);
-    read_corners(reader, 0);
+    Parallel_blocks parallel(threads, minimum_facets_for_parallel_reading);
+    parallel.run(0, nf, std::size_t(1) << 14, nf,
+                 [&](std::size_t, std::size_t first, std::size_t last) { read_corners(reader, first, last); });
     pair_twins(reader);
     // the points, by vertex number
     vertex_points_.resize(vertex_positions.size());
@@ -125,7 +135,7 @@ public:
       rank_of_[n + i] = std::uint32_t(kept + i);
     }
     const Triangulation_reader reader{keys_, cells, vertex_positions, inside};
-    read_corners(reader, n);
+    read_corners(reader, n, keys_.size());
     stats_.non_manifold_edges = 0;
     non_manifold_edge_ends_.clear();
     pair_twins(reader);
@@ -328,12 +338,12 @@ private:
     }
   };
 
-  // The corners of the facets from position `from` on (in memory order): the vertex numbers
-  // of the outward vertices of each facet, rotated to start at the lexicographically smallest
-  // point, so that the output does not depend on the vertex order in the cells.
-  void read_corners(const Triangulation_reader& reader, std::size_t from)
+  // The corners of the facets at the positions [from, nf) (in memory order): the vertex
+  // numbers of the outward vertices of each facet, rotated to start at the lexicographically
+  // smallest point, so that the output does not depend on the vertex order in the cells.
+  // Writes the corners of these facets only.
+  void read_corners(const Triangulation_reader& reader, std::size_t from, std::size_t nf)
   {
-    const std::size_t nf = keys_.size();
     // the cells (in increasing address, but far apart) and then their vertices are fetched
     // early: the reads of successive facets overlap instead of waiting one after the other
     constexpr std::size_t cells_ahead = 16, vertices_ahead = 8;

@@ -196,7 +196,8 @@ resolved_closed_surface(const Triangulation& dt, const NamedParameters& np,
   const Handle_index_map<typename Triangulation::Vertex> vertices(dt.tds().vertices().begin(), dt.tds().vertices().end());
   Closed_surface_repair_result r;
   std::unique_ptr<Closed_surface_mesh_3<Triangulation>> surface =
-    manifold_closed_surface(dt, cells, vertices, inside, constraints, keep, facets, r);
+    manifold_closed_surface(dt, cells, vertices, inside, constraints, keep, facets, r,
+                            choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::number_of_threads), 1u));
   report.resolved_non_manifold_vertices = r.statistics.repaired_vertices;
   report.resolution_changed_facets = r.removed_facets + r.added_facets;
   report.number_of_facets = facets.size();

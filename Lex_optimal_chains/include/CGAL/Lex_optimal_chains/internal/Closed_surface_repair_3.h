@@ -235,17 +235,19 @@ repair_closed_surface(const Triangulation& dt, const Handle_index_map<typename T
 // vertices resolved first unless `keep_non_manifold`; `facets` becomes the cycle of the
 // surface. The surface's own twins find the non-manifold vertices, so a manifold cycle costs
 // a walk around the vertices more than its surface; after a resolution, the surface reads only
-// the facets added, and pairs the twins anew.
+// the facets added, and pairs the twins anew. The surface reads the triangulation on `threads`
+// threads.
 template <class Triangulation>
 std::unique_ptr<Closed_surface_mesh_3<Triangulation>>
 manifold_closed_surface(const Triangulation& dt, const Handle_index_map<typename Triangulation::Cell>& cells,
                         const Handle_index_map<typename Triangulation::Vertex>& vertices, std::vector<bool>& inside,
                         const Constraint_cells& constraints, bool keep_non_manifold,
-                        std::vector<std::uint32_t>& facets, Closed_surface_repair_result& result)
+                        std::vector<std::uint32_t>& facets, Closed_surface_repair_result& result,
+                        unsigned threads = 1)
 {
   using Surface = Closed_surface_mesh_3<Triangulation>;
   Stopwatch watch;
-  std::unique_ptr<Surface> surface(new Surface(std::vector<std::uint32_t>(facets), cells, vertices, inside));
+  std::unique_ptr<Surface> surface(new Surface(std::vector<std::uint32_t>(facets), cells, vertices, inside, threads));
   const double surface_seconds = watch.lap();
   if(keep_non_manifold) {
     result.surface_seconds = surface_seconds;

@@ -230,7 +230,7 @@ public:
       const auto [r1, g1] = sets_.find_in_flat(owner);
       const auto [r2, g2] = sets_.find_in_flat(other);
       return r1 != r2 || intersection_product<Arithmetic>(gamma0.get(code, zero), g1, g2) != zero;
-    }));
+    }, threads));
   }
 
   // the sorted facets that Algorithm 10 must process

@@ -27,14 +27,10 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-#endif
 
 #include <algorithm>
 #include <atomic>
@@ -339,32 +335,23 @@ std::size_t for_each_cell_across_largest_facet(const Triangulation& dt,
                                                const Progress& progress, unsigned threads = 1)
 {
   const auto infinite = dt.infinite_vertex();
-#ifdef CGAL_LINKED_WITH_TBB
-  if(threads > 1 && cells.size() >= minimum_cells_for_parallel_contraction) {
-    const std::uint32_t n = std::uint32_t(cells.size());
-    constexpr std::uint32_t chunk = 1u << 20; // cells between two calls of `progress`
+  Parallel_blocks parallel(threads, minimum_cells_for_parallel_contraction);
+  if(parallel.is_parallel(cells.size())) {
     std::atomic<std::size_t> exact{0};
-    tbb::task_arena arena(static_cast<int>(threads));
-    for(std::uint32_t begin = 0; begin < n; begin += (std::min)(chunk, n - begin)) {
-      if(!progress(double(begin) / double(n))) throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
-      const std::uint32_t end = begin + (std::min)(chunk, n - begin);
-      arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::uint32_t>(begin, end, 1u << 13),
-                          [&](const tbb::blocked_range<std::uint32_t>& range) {
-                            std::size_t local_exact = 0;
-                            for(std::uint32_t pos = range.begin(); pos != range.end(); ++pos) {
-                              const auto& c = *cells.element(pos);
-                              if(terminal[pos] || c.has_vertex(infinite)) found(pos, pos);
-                              else found(pos, cells.index(&*c.neighbor(largest_facet(c, local_exact))));
-                            }
-                            exact += local_exact;
-                          });
-      });
-    }
+    parallel.run_in_waves(
+      cells.size(), std::size_t(1) << 13, std::size_t(1) << 20, progress,
+      [&](std::size_t, std::size_t first, std::size_t last) {
+        std::size_t local_exact = 0;
+        for(std::uint32_t pos = std::uint32_t(first); pos != last; ++pos) {
+          const auto& c = *cells.element(pos);
+          if(terminal[pos] || c.has_vertex(infinite)) found(pos, pos);
+          else found(pos, cells.index(&*c.neighbor(largest_facet(c, local_exact))));
+        }
+        exact += local_exact;
+      },
+      [](std::size_t, std::size_t) {});
     return exact;
   }
-#endif
-  (void)threads;
   const auto& container = dt.tds().cells();
   std::size_t exact = 0;
   std::uint32_t pos = 0;

@@ -26,6 +26,7 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
 #include <CGAL/Lex_optimal_chains/internal/Triangle_order_3.h>
@@ -68,9 +69,11 @@ inline std::uint64_t double_bits(double d)
 }
 
 // In-place MSD radix sort (American flag sort) on the bits [lowest_shift, shift + width) of
-// the keys, then insertion sort on the full key in small buckets.
+// the keys, then insertion sort on the full key in small buckets. With `parallel`, the
+// buckets of the first digit are sorted on its threads (they are independent: the result is
+// the same).
 inline void radix_sort_records(Dual_edge_record* begin, Dual_edge_record* end, int shift, int lowest_shift,
-                               int width = 8)
+                               int width = 8, Parallel_blocks* parallel = nullptr)
 {
   const std::size_t n = std::size_t(end - begin);
   if(n < 48 || shift < lowest_shift) {
@@ -96,7 +99,7 @@ inline void radix_sort_records(Dual_edge_record* begin, Dual_edge_record* end, i
   std::fill(count, count + buckets, std::size_t(0));
   for(Dual_edge_record* p = begin; p < end; ++p) ++count[(p->key >> shift) & mask];
   if(std::find(count, count + buckets, n) != count + buckets) {
-    radix_sort_records(begin, end, shift - 8, lowest_shift); // one bucket: next digit
+    radix_sort_records(begin, end, shift - 8, lowest_shift, 8, parallel); // one bucket: next digit
     return;
   }
   std::size_t sum = 0;
@@ -112,10 +115,17 @@ inline void radix_sort_records(Dual_edge_record* begin, Dual_edge_record* end, i
       begin[head[d]++] = x;
     }
   }
+  if(shift == lowest_shift) return;
+  if(parallel != nullptr && parallel->is_parallel(n)) {
+    // head[d] is now the end of bucket d
+    parallel->run(0, buckets, 1, n, [&](std::size_t d, std::size_t, std::size_t) {
+      if(count[d] > 1) radix_sort_records(begin + (head[d] - count[d]), begin + head[d], shift - 8, lowest_shift);
+    });
+    return;
+  }
   std::size_t start = 0;
   for(std::size_t d = 0; d < buckets; ++d) {
-    if(count[d] > 1 && shift > lowest_shift)
-      radix_sort_records(begin + start, begin + start + count[d], shift - 8, lowest_shift);
+    if(count[d] > 1) radix_sort_records(begin + start, begin + start + count[d], shift - 8, lowest_shift);
     start += count[d];
   }
 }
@@ -148,16 +158,19 @@ public:
   // The finite facets for which `keep(owner, j, other)` is true: the facet j of the cell at
   // position `owner` (in the numbering `cells` of the cell container, in iteration order),
   // whose record it is, shared with the cell at position `other`.
+  // With `threads` > 1 (and TBB), the keys are computed and the records sorted on that many
+  // threads; `keep` must then be safe to call concurrently. The records are the same, in the
+  // same order, for any number of threads.
   template <class Progress, class Keep>
   Sorted_dual_graph_3(const Triangulation& dt, const Handle_index_map<Cell>& cells, const Progress& progress,
-                      Keep&& keep)
+                      Keep&& keep, unsigned threads = 1)
     : dt_(dt), cells_(cells)
   {
     check_number_of_cells(cells_.size());
     auto t0 = std::chrono::steady_clock::now();
-    build_records(progress, keep);
+    build_records(progress, keep, threads);
     auto t1 = std::chrono::steady_clock::now();
-    sort_records(progress);
+    sort_records(progress, threads);
     auto t2 = std::chrono::steady_clock::now();
     key_seconds_ = std::chrono::duration<double>(t1 - t0).count();
     sort_seconds_ = std::chrono::duration<double>(t2 - t1).count() - repair_seconds_;
@@ -244,16 +257,19 @@ public:
   std::size_t number_of_exactly_sorted_records() const { return exactly_sorted_; }
 
 private:
+  // From this many cells, the key pass runs on several threads when it is given more than one.
+  static constexpr std::size_t minimum_cells_for_parallel_keys = 200000;
+
   template <class Progress, class Keep>
-  void build_records(const Progress& progress, Keep& keep)
+  void build_records(const Progress& progress, Keep& keep, unsigned threads)
   {
     // reserved for all the facets: the pages that a filter leaves unused are never touched
     records_.reserve(number_of_finite_facets(dt_));
-
-    // Each finite facet is written once, by the cell of lower address among its two cells;
-    // an infinite cell writes its finite facet from the side of its finite neighbor. No
-    // neighbor cell is read in the common case.
-    const Vertex_handle infinite = dt_.infinite_vertex();
+    Parallel_blocks parallel(threads, minimum_cells_for_parallel_keys);
+    if(parallel.is_parallel(cells_.size())) {
+      build_records_in_blocks(parallel, progress, keep);
+      return;
+    }
     std::uint32_t pos = 0;
     const auto& container = dt_.tds().cells();
     // the vertices of the cells a few steps ahead are fetched early
@@ -266,34 +282,82 @@ private:
       }
       if((pos & 0xfffff) == 0 && !progress(0.5 * double(pos) / double(cells_.size())))
         throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
-      const Cell& c = *it;
-      int infinite_index = -1;
-      for(int i = 0; i < 4; ++i)
-        if(c.vertex(i) == infinite) infinite_index = i;
-      if(infinite_index >= 0) {
-        const Cell_handle n = c.neighbor(infinite_index);
-        if(std::less<const Cell*>()(&*n, &c)) continue;
-        const std::uint32_t n_pos = cells_.index(&*n);
-        int j = 0; // the index of c in n
-        while(&*n->neighbor(j) != &c) ++j;
-        if(keep(n_pos, j, pos)) add_record(*n, n_pos, j, pos);
-        continue;
-      }
-      for(int j = 0; j < 4; ++j) {
-        const Cell* n = &*c.neighbor(j);
-        if(std::less<const Cell*>()(n, &c)) continue;
-        const std::uint32_t n_pos = cells_.index(n);
-        if(keep(pos, j, n_pos)) add_record(c, pos, j, n_pos);
-      }
+      add_records_of_cell(*it, pos, keep, records_, [this](std::uint32_t owner, std::uint64_t upper) {
+        uncertain_upper_.emplace(owner, upper);
+      });
     }
   }
 
-  void add_record(const Cell& c, std::uint32_t pos, int j, std::uint32_t other)
+  // The key pass on several threads: the records of each block of cells are made into the
+  // block's own buffer, and the buffers are appended in the order of the blocks, so that the
+  // records are in the same order as with one thread.
+  template <class Progress, class Keep>
+  void build_records_in_blocks(Parallel_blocks& parallel, const Progress& progress, Keep& keep)
+  {
+    constexpr std::size_t block = std::size_t(1) << 14, wave = std::size_t(1) << 20;
+    struct Block_output
+    {
+      std::vector<Record> records;
+      std::vector<std::pair<std::uint32_t, std::uint64_t>> uncertain;
+    };
+    std::vector<Block_output> outputs(wave / block);
+    parallel.run_in_waves(
+      cells_.size(), block, wave, [&](double x) { return progress(0.5 * x); },
+      [&](std::size_t b, std::size_t first, std::size_t last) {
+        Block_output& out = outputs[b % outputs.size()];
+        for(std::uint32_t pos = std::uint32_t(first); pos != last; ++pos)
+          add_records_of_cell(*cells_.element(pos), pos, keep, out.records,
+                              [&out](std::uint32_t owner, std::uint64_t upper) { out.uncertain.emplace_back(owner, upper); });
+      },
+      [&](std::size_t first_block, std::size_t blocks) {
+        for(std::size_t b = first_block; b < first_block + blocks; ++b) {
+          Block_output& out = outputs[b % outputs.size()];
+          records_.insert(records_.end(), out.records.begin(), out.records.end());
+          uncertain_upper_.insert(out.uncertain.begin(), out.uncertain.end());
+          out.records.clear();
+          out.uncertain.clear();
+        }
+      });
+  }
+
+  // Adds to `records` the records of the facets that the cell `c` at position `pos` writes:
+  // each finite facet is written once, by the cell of lower address among its two cells; an
+  // infinite cell writes its finite facet from the side of its finite neighbor. No neighbor
+  // cell is read in the common case. `uncertain(owner, upper)` receives the upper bounds of
+  // the keys that are only lower bounds.
+  template <class Keep, class Uncertain>
+  void add_records_of_cell(const Cell& c, std::uint32_t pos, Keep& keep, std::vector<Record>& records,
+                           const Uncertain& uncertain) const
+  {
+    const Vertex_handle infinite = dt_.infinite_vertex();
+    int infinite_index = -1;
+    for(int i = 0; i < 4; ++i)
+      if(c.vertex(i) == infinite) infinite_index = i;
+    if(infinite_index >= 0) {
+      const Cell_handle n = c.neighbor(infinite_index);
+      if(std::less<const Cell*>()(&*n, &c)) return;
+      const std::uint32_t n_pos = cells_.index(&*n);
+      int j = 0; // the index of c in n
+      while(&*n->neighbor(j) != &c) ++j;
+      if(keep(n_pos, j, pos)) add_record(*n, n_pos, j, pos, records, uncertain);
+      return;
+    }
+    for(int j = 0; j < 4; ++j) {
+      const Cell* n = &*c.neighbor(j);
+      if(std::less<const Cell*>()(n, &c)) continue;
+      const std::uint32_t n_pos = cells_.index(n);
+      if(keep(pos, j, n_pos)) add_record(c, pos, j, n_pos, records, uncertain);
+    }
+  }
+
+  template <class Uncertain>
+  static void add_record(const Cell& c, std::uint32_t pos, int j, std::uint32_t other, std::vector<Record>& records,
+                         const Uncertain& uncertain)
   {
     std::uint64_t upper;
     Record r = make_record(facet_coordinates(c, j), pos, j, other, upper);
-    if(r.key & 1) uncertain_upper_.emplace(r.owner, upper);
-    records_.push_back(r);
+    if(r.key & 1) uncertain(r.owner, upper);
+    records.push_back(r);
   }
 
 public:
@@ -475,7 +539,7 @@ private:
   }
 
   template <class Progress>
-  void sort_records(const Progress& progress)
+  void sort_records(const Progress& progress, unsigned threads)
   {
     if(!progress(0.5))
       throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
@@ -486,8 +550,9 @@ private:
     while(top > 0 && ((lo ^ hi) >> top) == 0) --top; // highest differing bit
     // first digit: 16 bits below the highest differing bit, then 8 bits at a time
     const int width = 12; // 4096 counters for the first digit: they stay in the L1 cache
+    Parallel_blocks parallel(threads, minimum_cells_for_parallel_keys);
     radix_sort_records(records_.data(), records_.data() + records_.size(), (std::max)(top - width + 1, 0),
-                       dropped_bits, width);
+                       dropped_bits, width, &parallel);
     if(!progress(0.8))
       throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
 
