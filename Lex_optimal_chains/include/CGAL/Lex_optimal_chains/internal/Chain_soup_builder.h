@@ -148,7 +148,7 @@ public:
     // sorted lexicographically: distributed by first vertex (a counting sort), then each
     // vertex's few triangles sorted by the other two
     triangles.assign(triangles_.size(), std::array<std::uint32_t, 3>{});
-    const std::vector<std::uint32_t> first = counting_sort_by_key(
+    const Large_vector<std::uint32_t> first = counting_sort_by_key(
       points.size(), std::uint32_t(triangles_.size()), [this](std::uint32_t i) { return triangles_[i][0]; },
       [&](std::uint32_t i, std::uint32_t at) { triangles[at] = triangles_[i]; });
     std::vector<std::array<std::uint32_t, 3>>().swap(triangles_);

@@ -60,7 +60,7 @@ public:
   // The cut in decreasing order; `inside` receives the source's side, by cell position.
   // Consumes the contraction: its sorted facets may be released.
   template <class Progress>
-  std::vector<Dual_edge_record> cut(std::uint32_t source, const std::vector<std::uint32_t>& sinks,
+  Dual_edge_records cut(std::uint32_t source, const std::vector<std::uint32_t>& sinks,
                                     std::vector<bool>& inside, const Progress& progress)
   {
     const std::vector<std::uint32_t> parent_edge = parent_edges();
@@ -244,9 +244,9 @@ private:
   // facet of the cut is among the sorted facets; otherwise the facets between inside and
   // outside cells are sorted anew. The cut is about as large as the sorted facets, so it is
   // filtered out of them in place rather than copied (peak memory).
-  std::vector<Dual_edge_record> cut_records(bool component_split, const std::vector<bool>& inside)
+  Dual_edge_records cut_records(bool component_split, const std::vector<bool>& inside)
   {
-    std::vector<Dual_edge_record> result;
+    Dual_edge_records result;
     if(component_split) {
       contracted_.release_graph();
       result = Graph(contracted_.triangulation(), contracted_.cells(), [](double) { return true; },
@@ -272,7 +272,7 @@ private:
 // Algorithm 8 from the single source `source` and the spanning tree of
 // `most_persistent_void()` (see Closed_cut_from_tree_3).
 template <class Triangulation, class Progress>
-std::vector<Dual_edge_record> lexicographic_closed_cut_from_tree(Contracted_dual_graph_3<Triangulation>& contracted,
+Dual_edge_records lexicographic_closed_cut_from_tree(Contracted_dual_graph_3<Triangulation>& contracted,
                                                                  const Dense_numbers& components,
                                                                  const std::vector<std::uint32_t>& tree,
                                                                  std::uint32_t source,

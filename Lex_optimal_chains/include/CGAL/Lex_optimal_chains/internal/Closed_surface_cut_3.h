@@ -101,7 +101,7 @@ public:
   const Graph& graph() const { return *graph_; }
   void release_graph() { graph_.reset(); }
   // the sorted facets, given away (the graph keeps none)
-  std::vector<Dual_edge_record> release_records() { return graph_->release_records(); }
+  Dual_edge_records release_records() { return graph_->release_records(); }
   std::size_t number_of_cells() const { return terminal_.size(); }
   // whether the cell at position `c` was contracted (it is neither a terminal nor infinite)
   bool is_contracted(std::uint32_t c) const
@@ -271,7 +271,7 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
 // Algorithm 8 on the contracted graph built with sources: the cut facets in decreasing order;
 // `inside` (per cell position) receives the final component of the sources.
 template <class Triangulation, class Progress>
-std::vector<Dual_edge_record> lexicographic_closed_cut(Contracted_dual_graph_3<Triangulation>& contracted,
+Dual_edge_records lexicographic_closed_cut(Contracted_dual_graph_3<Triangulation>& contracted,
                                                        std::vector<bool>& inside, const Progress& progress)
 {
   using Graph = Sorted_dual_graph_3<Triangulation>;
@@ -279,7 +279,7 @@ std::vector<Dual_edge_record> lexicographic_closed_cut(Contracted_dual_graph_3<T
   Union_find& sets = contracted.sets();
   std::uint32_t source = contracted.source_root(), sink = contracted.sink_root();
   CGAL_precondition(source != Contracted_dual_graph_3<Triangulation>::none && source != sink);
-  std::vector<Dual_edge_record> result;
+  Dual_edge_records result;
   const std::size_t m = records.size();
   for(std::size_t t = 0; t < m; ++t) {
     if((t & 0xfffff) == 0 && !progress(double(t) / double(m)))

@@ -15,6 +15,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Dense_numbers.h>
 #include <CGAL/Lex_optimal_chains/internal/Edge_groups.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Large_array_allocator.h>
 #include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
@@ -84,11 +85,11 @@ public:
     // corners, edges and umbrellas are read nearby; `rank_of_` keeps the given (canonical)
     // order for the numbering of the output.
     {
-      std::vector<std::uint64_t> order(nf), buffer;
+      Large_vector<std::uint64_t> order(nf), buffer;
       for(std::size_t k = 0; k < nf; ++k) order[k] = (std::uint64_t(facet_keys[k]) << 32) | k;
       std::vector<std::uint32_t>().swap(facet_keys);
       radix_sort_high_words(order, buffer);
-      std::vector<std::uint64_t>().swap(buffer);
+      Large_vector<std::uint64_t>().swap(buffer);
       keys_.resize(nf);
       rank_of_.resize(nf);
       for(std::size_t k = 0; k < nf; ++k) {
@@ -116,7 +117,7 @@ public:
                       const std::vector<bool>& inside)
   {
     CGAL_precondition(!completed_ && removed.size() == rank_of_.size());
-    std::vector<std::uint32_t> new_rank(removed.size()); // of the facets kept, in the given order
+    Large_vector<std::uint32_t> new_rank(removed.size()); // of the facets kept, in the given order
     std::uint32_t kept = 0;
     for(std::size_t r = 0; r < removed.size(); ++r) new_rank[r] = removed[r] ? UINT32_MAX : kept++;
     std::size_t n = 0;
@@ -172,16 +173,16 @@ public:
   {
     CGAL_precondition(!completed_);
     completed_ = true;
-    std::vector<std::uint32_t>().swap(keys_);
+    Large_vector<std::uint32_t>().swap(keys_);
     const std::size_t nf = rank_of_.size();
     // one vertex copy per umbrella (the cycle of corners around a vertex linked by twins).
     // Umbrellas are walked in the memory order of the facets (their corners are then
     // nearby), and the copies are numbered afterwards in the canonical order: by the first
     // corner (3 * rank + e) of each umbrella in the given order of the facets.
     corner_vertex_.assign(3 * nf, UINT32_MAX);
-    std::vector<std::uint32_t> copies; // vertex number of each copy, in the canonical order
+    Large_vector<std::uint32_t> copies; // vertex number of each copy, in the canonical order
     {
-      std::vector<std::uint32_t> first_corner; // of each copy, in walk order
+      Large_vector<std::uint32_t> first_corner; // of each copy, in walk order
       for(std::uint32_t c = 0; c < 3 * nf; ++c) {
         if(corner_vertex_[c] != UINT32_MAX) continue;
         const std::uint32_t id = std::uint32_t(first_corner.size());
@@ -194,18 +195,18 @@ public:
       }
       // the first canonical corner of each copy, in a pass in memory order (in the walks, the
       // ranks were one more read at random per step)
-      std::vector<std::uint32_t> first(first_corner.size(), UINT32_MAX);
+      Large_vector<std::uint32_t> first(first_corner.size(), UINT32_MAX);
       for(std::uint32_t c = 0; c < 3 * nf; ++c) {
         std::uint32_t& f = first[corner_vertex_[c]];
         f = (std::min)(f, 3 * rank_of_[c / 3] + c % 3);
       }
-      std::vector<std::uint64_t> canonical(first.size()); // (first canonical corner << 32) | walk id
+      Large_vector<std::uint64_t> canonical(first.size()); // (first canonical corner << 32) | walk id
       for(std::uint32_t id = 0; id < first.size(); ++id) canonical[id] = (std::uint64_t(first[id]) << 32) | id;
-      std::vector<std::uint32_t>().swap(first);
-      std::vector<std::uint64_t> buffer;
+      Large_vector<std::uint32_t>().swap(first);
+      Large_vector<std::uint64_t> buffer;
       radix_sort_high_words(canonical, buffer);
-      std::vector<std::uint64_t>().swap(buffer);
-      std::vector<std::uint32_t> number(canonical.size());
+      Large_vector<std::uint64_t>().swap(buffer);
+      Large_vector<std::uint32_t> number(canonical.size());
       copies.resize(canonical.size());
       for(std::size_t i = 0; i < canonical.size(); ++i) {
         const std::uint32_t id = std::uint32_t(canonical[i]);
@@ -214,7 +215,7 @@ public:
       }
       for(std::uint32_t& v : corner_vertex_) v = number[v];
     }
-    std::vector<std::uint32_t>().swap(corners_);
+    Large_vector<std::uint32_t>().swap(corners_);
 
     // statistics: vertices split in several copies (split edges were counted with the twins)
     stats_.vertices = copies.size();
@@ -229,8 +230,8 @@ public:
     }
     points_.reserve(copies.size());
     for(const std::uint32_t v : copies) points_.push_back(vertex_points_[v]);
-    std::vector<Point>().swap(vertex_points_);
-    std::vector<std::uint32_t>().swap(copies);
+    Large_vector<Point>().swap(vertex_points_);
+    Large_vector<std::uint32_t>().swap(copies);
 
     // components and the sum of their genera: every component is a closed oriented surface,
     // of even Euler characteristic V - E + F = V - F/2 (E = 3F/2), and genus (2 - chi) / 2, so
@@ -250,7 +251,7 @@ public:
     // which `build()` follows
     {
       // read in memory order (a twin is nearby), written at random
-      std::vector<std::uint32_t> twin(3 * nf), corner_vertex(3 * nf);
+      Large_vector<std::uint32_t> twin(3 * nf), corner_vertex(3 * nf);
       for(std::uint32_t k = 0; k < nf; ++k)
         for(std::uint32_t e = 0; e < 3; ++e) {
           const std::uint32_t h = 3 * k + e, t = twin_[h];
@@ -259,7 +260,7 @@ public:
         }
       twin_.swap(twin);
       corner_vertex_.swap(corner_vertex);
-      std::vector<std::uint32_t>().swap(rank_of_);
+      Large_vector<std::uint32_t>().swap(rank_of_);
     }
   }
 
@@ -317,7 +318,7 @@ private:
   // The triangulation as the constructor reads it: the facets (in memory order) by their keys.
   struct Triangulation_reader
   {
-    const std::vector<std::uint32_t>& keys;
+    const Large_vector<std::uint32_t>& keys;
     const Handle_index_map<Cell>& cells;
     const Handle_index_map<Vertex>& vertices;
     const std::vector<bool>& inside;
@@ -408,7 +409,7 @@ private:
   std::size_t pair_twins_by_vertices(std::size_t number_of_vertices)
   {
     const std::uint32_t nh = std::uint32_t(corners_.size());
-    const std::vector<std::uint32_t>& id = corners_; // vertex number of each corner
+    const Large_vector<std::uint32_t>& id = corners_; // vertex number of each corner
     std::size_t paired = 0;
     for_each_edge_group(number_of_vertices, nh, [&](std::uint32_t c) { return id[c]; },
                         [&](const std::uint32_t* first, const std::uint32_t* last) {
@@ -463,14 +464,14 @@ private:
   }
 
   bool completed_ = false;
-  std::vector<std::uint32_t> keys_;          // of the facets, in memory order (until `complete()`)
-  std::vector<std::uint32_t> rank_of_;       // memory order -> canonical rank (until `complete()`)
-  std::vector<std::uint32_t> corners_;       // vertex numbers, 3 per facet (until `complete()`)
-  std::vector<Point> vertex_points_;         // by vertex number (until `complete()`)
-  std::vector<std::uint32_t> twin_;          // of each half-edge
+  Large_vector<std::uint32_t> keys_;          // of the facets, in memory order (until `complete()`)
+  Large_vector<std::uint32_t> rank_of_;       // memory order -> canonical rank (until `complete()`)
+  Large_vector<std::uint32_t> corners_;       // vertex numbers, 3 per facet (until `complete()`)
+  Large_vector<Point> vertex_points_;         // by vertex number (until `complete()`)
+  Large_vector<std::uint32_t> twin_;          // of each half-edge
   std::vector<std::uint32_t> non_manifold_edge_ends_; // vertex numbers, with repetitions
-  std::vector<std::uint32_t> corner_vertex_; // mesh vertex of each corner (after `complete()`)
-  std::vector<Point> points_;                // of the mesh vertices (after `complete()`)
+  Large_vector<std::uint32_t> corner_vertex_; // mesh vertex of each corner (after `complete()`)
+  Large_vector<Point> points_;                // of the mesh vertices (after `complete()`)
   Closed_surface_statistics stats_;
 };
 

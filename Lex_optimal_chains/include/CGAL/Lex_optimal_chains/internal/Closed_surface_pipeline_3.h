@@ -141,7 +141,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
               << graph.sort_seconds() << " s, exact runs " << graph.repair_seconds() << " s)\n";
 
   const Stage_progress cut_progress{&callback, progress_from + 0.6 * span, progress_from + 0.8 * span};
-  std::vector<Dual_edge_record> cut;
+  Dual_edge_records cut;
   if(sources.empty()) {
     const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
     Dense_numbers components; // of the contraction

@@ -34,8 +34,8 @@ void for_each_edge_group(std::size_t number_of_vertices, std::uint32_t number_of
   auto head = [&](std::uint32_t h) { return corner_vertex(3 * (h / 3) + (h % 3 + 1) % 3); };
   auto smaller = [&](std::uint32_t h) { return (std::min)(tail(h), head(h)); };
   auto larger = [&](std::uint32_t h) { return (std::max)(tail(h), head(h)); };
-  std::vector<std::uint32_t> bucket(nh); // increasing in a bucket
-  const std::vector<std::uint32_t> first =
+  Large_vector<std::uint32_t> bucket(nh); // increasing in a bucket
+  const Large_vector<std::uint32_t> first =
     counting_sort_by_key(number_of_vertices, nh, smaller, [&](std::uint32_t h, std::uint32_t at) { bucket[at] = h; });
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted; // (larger vertex, half-edge)
   for(std::size_t v = 0; v < number_of_vertices; ++v) {

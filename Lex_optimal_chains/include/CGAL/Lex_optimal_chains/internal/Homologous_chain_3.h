@@ -125,7 +125,7 @@ typename Arithmetic::Value chain_coefficient(const Dual_edge_record& entry)
 // already (after a contraction, most records are in the chain, and a separate array would
 // take as much fresh memory again, at the peak of memory).
 template <class Arithmetic, class Graph, class Progress>
-std::vector<Dual_edge_record> lexicographic_homologous_chain(Graph& graph, Augmented_union_find<Arithmetic>& sets,
+Dual_edge_records lexicographic_homologous_chain(Graph& graph, Augmented_union_find<Arithmetic>& sets,
                                                              const Record_values<typename Arithmetic::Value>& gamma0,
                                                              const Record_values<std::uint8_t>& relative,
                                                              const Progress& progress)
@@ -133,7 +133,7 @@ std::vector<Dual_edge_record> lexicographic_homologous_chain(Graph& graph, Augme
   using Value = typename Arithmetic::Value;
   const Value zero = Arithmetic::zero();
   const bool is_relative = !relative.values().empty();
-  std::vector<Dual_edge_record> records = graph.release_records();
+  Dual_edge_records records = graph.release_records();
   const std::size_t m = records.size();
   std::size_t chain_size = 0;
   constexpr std::size_t ahead = 16;

@@ -53,7 +53,7 @@ oriented_facet(const Triangulation& dt, typename Triangulation::Vertex_handle a,
 // the owner for a positive coefficient, of the other cell for a negative one.
 template <class Arithmetic, class Triangulation, class OutputIterator>
 void write_chain(const Triangulation& dt, const Handle_index_map<typename Triangulation::Cell>& cells,
-                 const std::vector<Dual_edge_record>& chain, OutputIterator out, Open_surface_report& report)
+                 const Dual_edge_records& chain, OutputIterator out, Open_surface_report& report)
 {
   using Facet = typename Triangulation::Facet;
   auto& container = const_cast<typename Triangulation::Triangulation_data_structure&>(dt.tds()).cells();
@@ -136,7 +136,7 @@ void optimal_chain(const Triangulation& dt, const NamedParameters& np, const Add
               << " triangles between components or with a non-zero intersection product in " << report.order_seconds
               << " s\n";
   // the chain is written over the sorted facets
-  const std::vector<Dual_edge_record> chain = lexicographic_homologous_chain<Arithmetic>(
+  const Dual_edge_records chain = lexicographic_homologous_chain<Arithmetic>(
     contracted.graph(), contracted.sets(), gamma0, relative, Stage_progress{&callback, progress_from + 0.7 * span, 1.0});
   // the disjoint sets and the graph freed before the output grows: peak memory
   contracted.release_sets();

@@ -4,6 +4,8 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_RADIX_SORT_H
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_RADIX_SORT_H
 
+#include <CGAL/Lex_optimal_chains/internal/Large_array_allocator.h>
+
 #include <cstdint>
 #include <vector>
 
@@ -13,7 +15,8 @@ namespace internal {
 
 // Sorts 64-bit words (a 32-bit key in the high half, a payload in the low half) by their
 // high 32 bits: LSD radix sort, 4 stable passes of 8 bits, `buffer` as scratch space.
-inline void radix_sort_high_words(std::vector<std::uint64_t>& v, std::vector<std::uint64_t>& buffer)
+template <class Vector> // of std::uint64_t
+void radix_sort_high_words(Vector& v, Vector& buffer)
 {
   buffer.resize(v.size());
   for(int shift = 32; shift < 64; shift += 8) {
@@ -29,13 +32,13 @@ inline void radix_sort_high_words(std::vector<std::uint64_t>& v, std::vector<std
 // `place(i, position)` for every item, in increasing order of the items, the positions of key k
 // being first[k], ..., first[k + 1] - 1; returns `first` (number_of_keys + 1 offsets).
 template <class Key, class Place>
-std::vector<std::uint32_t> counting_sort_by_key(std::size_t number_of_keys, std::uint32_t n, const Key& key,
-                                                const Place& place)
+Large_vector<std::uint32_t> counting_sort_by_key(std::size_t number_of_keys, std::uint32_t n, const Key& key,
+                                                 const Place& place)
 {
-  std::vector<std::uint32_t> first(number_of_keys + 1, 0);
+  Large_vector<std::uint32_t> first(number_of_keys + 1, 0);
   for(std::uint32_t i = 0; i < n; ++i) ++first[key(i) + 1];
   for(std::size_t k = 0; k < number_of_keys; ++k) first[k + 1] += first[k];
-  std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+  Large_vector<std::uint32_t> next(first.begin(), first.end() - 1);
   for(std::uint32_t i = 0; i < n; ++i) place(i, next[key(i)]++);
   return first;
 }

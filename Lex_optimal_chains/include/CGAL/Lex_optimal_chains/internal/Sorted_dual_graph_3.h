@@ -26,6 +26,7 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
+#include <CGAL/Lex_optimal_chains/internal/Large_array_allocator.h>
 #include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Radix_sort.h>
@@ -60,6 +61,9 @@ struct Dual_edge_record
   // obtuse triangle whose q is certified, 3 otherwise
   std::uint32_t other;
 };
+
+// The records of a graph, one per facet kept (tens of millions).
+using Dual_edge_records = Large_vector<Dual_edge_record>;
 
 inline std::uint64_t double_bits(double d)
 {
@@ -193,10 +197,10 @@ public:
   // the numbering of the cells (positions) used by the records
   const Handle_index_map<Cell>& cell_positions() const { return cells_; }
   // records sorted increasingly along the triangle order
-  const std::vector<Record>& records() const { return records_; }
+  const Dual_edge_records& records() const { return records_; }
   // gives the records away (the graph has none afterwards), for a caller that filters them
   // in place rather than into fresh memory
-  std::vector<Record> release_records() { return std::move(records_); }
+  Dual_edge_records release_records() { return std::move(records_); }
 
   std::uint32_t position(Cell_handle c) const { return cells_.index(&*c); }
   Cell_handle cell(std::uint32_t position) const
@@ -297,7 +301,7 @@ private:
     constexpr std::size_t block = std::size_t(1) << 14, wave = std::size_t(1) << 20;
     struct Block_output
     {
-      std::vector<Record> records;
+      Dual_edge_records records;
       std::vector<std::pair<std::uint32_t, std::uint64_t>> uncertain;
     };
     std::vector<Block_output> outputs(wave / block);
@@ -326,7 +330,7 @@ private:
   // cell is read in the common case. `uncertain(owner, upper)` receives the upper bounds of
   // the keys that are only lower bounds.
   template <class Keep, class Uncertain>
-  void add_records_of_cell(const Cell& c, std::uint32_t pos, Keep& keep, std::vector<Record>& records,
+  void add_records_of_cell(const Cell& c, std::uint32_t pos, Keep& keep, Dual_edge_records& records,
                            const Uncertain& uncertain) const
   {
     const Vertex_handle infinite = dt_.infinite_vertex();
@@ -351,7 +355,7 @@ private:
   }
 
   template <class Uncertain>
-  static void add_record(const Cell& c, std::uint32_t pos, int j, std::uint32_t other, std::vector<Record>& records,
+  static void add_record(const Cell& c, std::uint32_t pos, int j, std::uint32_t other, Dual_edge_records& records,
                          const Uncertain& uncertain)
   {
     std::uint64_t upper;
@@ -641,7 +645,7 @@ private:
 
   const Triangulation& dt_;
   Handle_index_map<Cell> cells_;
-  std::vector<Record> records_;
+  Dual_edge_records records_;
   std::unordered_map<std::uint32_t, std::uint64_t> uncertain_upper_;
   std::size_t in_runs_ = 0, exactly_sorted_ = 0;
   double key_seconds_ = 0, sort_seconds_ = 0, repair_seconds_ = 0;

@@ -61,8 +61,8 @@ std::vector<std::uint32_t> vertices_with_several_umbrellas(std::size_t number_of
 {
   using Index = std::uint32_t;
   const Index nc = 3 * number_of_triangles;
-  std::vector<Index> bucket(nc); // corners by vertex
-  const std::vector<Index> first =
+  Large_vector<Index> bucket(nc); // corners by vertex
+  const Large_vector<std::uint32_t> first =
     counting_sort_by_key(number_of_vertices, nc, corner_vertex, [&](Index c, Index at) { bucket[at] = c; });
   std::vector<Index> result;
   std::vector<std::pair<Index, Index>> link; // edges of the link of a vertex

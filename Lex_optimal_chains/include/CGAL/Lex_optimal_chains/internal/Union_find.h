@@ -4,6 +4,7 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_UNION_FIND_H
 
+#include <CGAL/Lex_optimal_chains/internal/Large_array_allocator.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
 #include <CGAL/Lex_optimal_chains/internal/Zeroed_bytes.h>
 
@@ -153,7 +154,7 @@ public:
   Index unite(Index a, Index b) { return link_roots(find(a), find(b)); }
 
 private:
-  std::vector<Index> parent_;
+  Large_vector<Index> parent_;
   Zeroed_bytes rank_;
 };
 
