@@ -14,8 +14,7 @@
 // the kernel does not follow the advice, this is `std::allocator`.
 //
 // The advice is given for the package's own arrays only, never through the global allocator:
-// the triangulation, built on several threads, allocates in small blocks from many threads,
-// where huge pages make the page faults contend.
+// the memory of the user's triangulation and mesh is not the package's to place.
 
 #include <cstddef>
 #include <cstdlib>
