@@ -8,10 +8,12 @@
 // hundreds of megabytes). Such an array is written once, at random or in one pass, soon after
 // it is allocated, so the first touch of its pages costs as much as its use: one page fault
 // per 4 KiB page, in which the kernel zeroes the page (and, in a virtual machine, the host may
-// back it). On Linux, arrays of 2 MiB or more are aligned on 2 MiB and marked with
+// back it). On Linux, arrays of 8 MiB or more are aligned on 2 MiB and marked with
 // `madvise(MADV_HUGEPAGE)`: with transparent huge pages in their default `madvise` mode, the
-// kernel then backs them with 2 MiB pages, one fault for 512 small ones. Elsewhere, or when
-// the kernel does not follow the advice, this is `std::allocator`.
+// kernel then backs them with 2 MiB pages, one fault for 512 small ones. Smaller arrays are
+// left to `std::allocator`: a huge page is committed whole, and the rounding of many small
+// arrays to 2 MiB would raise the peak memory of small inputs. Elsewhere, or when the kernel
+// does not follow the advice, this is `std::allocator`.
 //
 // The advice is given for the package's own arrays only, never through the global allocator:
 // the memory of the user's triangulation and mesh is not the package's to place.
@@ -72,7 +74,8 @@ public:
 
 private:
   static constexpr std::size_t huge_page_size = std::size_t(1) << 21;
-  static bool is_large(std::size_t n) { return n >= huge_page_size / sizeof(T); }
+  static constexpr std::size_t minimum_bytes = std::size_t(1) << 23;
+  static bool is_large(std::size_t n) { return n >= minimum_bytes / sizeof(T); }
   // aligned_alloc wants a multiple of the alignment
   static std::size_t rounded_size(std::size_t n)
   {
