@@ -26,6 +26,7 @@
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
+#include <CGAL/Lex_optimal_chains/internal/Closed_surface_mesh_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Umbrellas.h>
 
 #include <algorithm>
@@ -160,6 +161,65 @@ void test_detection_on_unions_of_cells()
   std::cout << "detection: " << soups_with_non_manifold_points << " of 300 unions of cells have non-manifold points, "
             << "found as PMP finds them\n";
   assert(soups_with_non_manifold_points > 100);
+}
+
+// ---- the patching of a closed surface after a change of sides ------------------------------------
+// The surface of a random union of cells, patched by replace_facets() after random cells
+// changed sides (the resolution's path: only the changed edges are paired anew), must be the
+// surface built afresh from the new union, with the facets in the same order: the same
+// statistics (non-manifold edges and vertices included) and the same mesh.
+void test_replaced_facets_on_unions_of_cells()
+{
+  using Surface = LOC::internal::Closed_surface_mesh_3<DT>;
+  std::vector<Point> points;
+  for(int i = 0; i < 80; ++i) points.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
+  const DT dt(points.begin(), points.end());
+  const LOC::internal::Handle_index_map<DT::Cell> cells(dt.tds().cells().begin(), dt.tds().cells().end());
+  const LOC::internal::Handle_index_map<DT::Vertex> vertices(dt.tds().vertices().begin(), dt.tds().vertices().end());
+  auto boundary = [&](const std::vector<bool>& inside) { // keys named from the inside cells
+    std::vector<std::uint32_t> keys;
+    for(std::uint32_t p = 0; p < cells.size(); ++p)
+      for(int i = 0; i < 4; ++i)
+        if(inside[p] && !inside[cells.index(&*cells.element(p)->neighbor(i))]) keys.push_back(Surface::facet_key(p, i));
+    return keys;
+  };
+  auto mesh_of = [&](Surface& surface, Mesh& mesh) {
+    surface.complete();
+    surface.build(mesh, get(CGAL::vertex_point, mesh));
+    return surface.statistics();
+  };
+  std::size_t with_non_manifold_edges = 0;
+  for(int trial = 0; trial < 200; ++trial) {
+    std::vector<bool> before(cells.size(), false), after;
+    for(std::uint32_t p = 0; p < cells.size(); ++p) before[p] = !cells.element(p)->has_vertex(dt.infinite_vertex()) && rng.get_double() < 0.5;
+    after = before;
+    for(std::uint32_t p = 0; p < cells.size(); ++p)
+      if(!cells.element(p)->has_vertex(dt.infinite_vertex()) && rng.get_double() < 0.05) after[p] = !after[p];
+    const std::vector<std::uint32_t> old_keys = boundary(before), new_keys = boundary(after);
+    if(old_keys.empty() || new_keys.empty()) continue;
+    // a facet is the same if its inside cell is: the keys name the inside cells
+    const std::set<std::uint32_t> old_set(old_keys.begin(), old_keys.end()), new_set(new_keys.begin(), new_keys.end());
+    std::vector<bool> removed(old_keys.size());
+    std::vector<std::uint32_t> added, expected_keys;
+    for(std::size_t r = 0; r < old_keys.size(); ++r)
+      if(!(removed[r] = new_set.count(old_keys[r]) == 0)) expected_keys.push_back(old_keys[r]);
+    for(const std::uint32_t k : new_keys)
+      if(!old_set.count(k)) added.push_back(k), expected_keys.push_back(k);
+    Surface patched(std::vector<std::uint32_t>(old_keys), cells, vertices, before);
+    patched.replace_facets(removed, added, cells, vertices, after);
+    Surface fresh(std::move(expected_keys), cells, vertices, after);
+    Mesh m1, m2;
+    const LOC::internal::Closed_surface_statistics s1 = mesh_of(patched, m1), s2 = mesh_of(fresh, m2);
+    assert(s1.vertices == s2.vertices && s1.faces == s2.faces && s1.components == s2.components &&
+           s1.non_manifold_edges == s2.non_manifold_edges && s1.non_manifold_vertices == s2.non_manifold_vertices &&
+           s1.genus == s2.genus);
+    for(const auto v : m1.vertices()) assert(m1.point(v) == m2.point(v));
+    for(const auto h : m1.halfedges()) assert(m1.target(h) == m2.target(h) && m1.next(h) == m2.next(h));
+    with_non_manifold_edges += s2.non_manifold_edges > 0;
+  }
+  std::cout << "patching: 200 changes of random unions of cells give the surface built afresh (" << with_non_manifold_edges
+            << " with non-manifold edges)\n";
+  assert(with_non_manifold_edges > 50);
 }
 
 // ---- closed surfaces ------------------------------------------------------------------------------
@@ -376,6 +436,7 @@ int main(int argc, char** argv)
   std::cout << std::unitbuf;
   const std::string data = argc > 1 ? argv[1] : "";
   test_detection_on_unions_of_cells();
+  test_replaced_facets_on_unions_of_cells();
   test_closed_surfaces(data);
   test_open_surfaces(data);
   test_lattice_inputs();

@@ -111,7 +111,9 @@ public:
   // Replaces the facets of ranks flagged in `removed` (by rank in the order given to the
   // constructor) by the facets `added` (keys of either cell), which follow the facets kept in
   // the canonical order; `inside` is the new side of the cells. Only the added facets are read
-  // from the triangulation; the twins are paired anew. Before `complete()`.
+  // from the triangulation, and only the edges of the removed and added facets are paired
+  // anew: around any other edge no cell changed side (a cell that does changes all its
+  // facets), so its twins are those it had. Before `complete()`.
   void replace_facets(const std::vector<bool>& removed, const std::vector<std::uint32_t>& added,
                       const Handle_index_map<Cell>& cells, const Handle_index_map<Vertex>& vertex_positions,
                       const std::vector<bool>& inside)
@@ -120,9 +122,15 @@ public:
     Large_vector<std::uint32_t> new_rank(removed.size()); // of the facets kept, in the given order
     std::uint32_t kept = 0;
     for(std::size_t r = 0; r < removed.size(); ++r) new_rank[r] = removed[r] ? UINT32_MAX : kept++;
+    Large_vector<std::uint32_t> new_position(keys_.size(), UINT32_MAX); // memory order: old -> new
+    std::vector<std::uint64_t> changed_edges; // of the removed and the added facets
     std::size_t n = 0;
     for(std::size_t k = 0; k < keys_.size(); ++k) {
-      if(removed[rank_of_[k]]) continue;
+      if(removed[rank_of_[k]]) { // its corners are still in place: only positions up to n < k were written
+        add_edges_of_facet(k, changed_edges);
+        continue;
+      }
+      new_position[k] = std::uint32_t(n);
       keys_[n] = keys_[k];
       rank_of_[n] = new_rank[rank_of_[k]];
       for(int e = 0; e < 3; ++e) corners_[3 * n + e] = corners_[3 * k + e];
@@ -137,9 +145,10 @@ public:
     }
     const Triangulation_reader reader{keys_, cells, vertex_positions, inside};
     read_corners(reader, n, keys_.size());
-    stats_.non_manifold_edges = 0;
-    non_manifold_edge_ends_.clear();
-    pair_twins(reader);
+    for(std::size_t k = n; k < keys_.size(); ++k) add_edges_of_facet(k, changed_edges);
+    std::sort(changed_edges.begin(), changed_edges.end());
+    changed_edges.erase(std::unique(changed_edges.begin(), changed_edges.end()), changed_edges.end());
+    pair_changed_twins(reader, new_position, changed_edges);
   }
 
   // The numbers of the non-manifold vertices, in increasing order: the ends of the
@@ -375,14 +384,20 @@ private:
     const std::size_t nf = keys_.size();
     twin_.assign(3 * nf, UINT32_MAX);
     if(pair_twins_by_vertices(reader.vertices.size()) == 3 * nf) return;
-    // non-manifold edges (four or more boundary facets): turn around them through the
-    // inside cells. The facet met there has its half-edge on that edge unpaired too, so the
-    // table holds only the facets with an unpaired half-edge (a few, not all of them: a
-    // table of all the facets would be another array of the size of the surface)
     std::vector<std::uint32_t> unpaired; // positions (in memory order) of these facets
     for(std::uint32_t k = 0; k < nf; ++k)
       if(twin_[3 * k] == UINT32_MAX || twin_[3 * k + 1] == UINT32_MAX || twin_[3 * k + 2] == UINT32_MAX)
         unpaired.push_back(k);
+    pair_around_non_manifold_edges(reader, unpaired);
+  }
+
+  // The twins of the half-edges of the facets at the positions `unpaired` (increasing) that
+  // have none: these lie on non-manifold edges (four or more boundary facets), around which
+  // we turn through the inside cells. The facet met there has its half-edge on that edge
+  // unpaired too, so the table holds only the facets with an unpaired half-edge (a few, not
+  // all of them: a table of all the facets would be another array of the size of the surface).
+  void pair_around_non_manifold_edges(const Triangulation_reader& reader, const std::vector<std::uint32_t>& unpaired)
+  {
     Dense_numbers table(unpaired.size()); // their keys, named from their inside cells
     for(const std::uint32_t k : unpaired) {
       const auto f = reader.from_inside(k);
@@ -398,6 +413,87 @@ private:
         twin_[h] = t;
         twin_[t] = h;
       }
+  }
+
+  // The edge of half-edge h as (smaller vertex << 32) | larger vertex.
+  std::uint64_t edge_of(std::uint32_t h) const
+  {
+    const std::uint32_t u = corners_[h], v = corners_[3 * (h / 3) + (h % 3 + 1) % 3];
+    return (std::uint64_t((std::min)(u, v)) << 32) | (std::max)(u, v);
+  }
+
+  void add_edges_of_facet(std::size_t k, std::vector<std::uint64_t>& edges) const
+  {
+    for(std::uint32_t e = 0; e < 3; ++e) edges.push_back(edge_of(std::uint32_t(3 * k + e)));
+  }
+
+  // The twins after `replace_facets()`: the old twin of a half-edge of a kept facet (at the
+  // position `new_position` gives) unless its edge is one of `changed_edges` (sorted); the
+  // half-edges on these edges are paired as in `pair_twins()`, and the non-manifold edges
+  // among them replace those that were counted there.
+  void pair_changed_twins(const Triangulation_reader& reader, const Large_vector<std::uint32_t>& new_position,
+                          const std::vector<std::uint64_t>& changed_edges)
+  {
+    std::vector<bool> touched(reader.vertices.size(), false); // the ends of the changed edges
+    for(const std::uint64_t edge : changed_edges) touched[edge >> 32] = touched[std::uint32_t(edge)] = true;
+    auto is_changed = [&](std::uint32_t h) {
+      return touched[corners_[h]] && touched[corners_[3 * (h / 3) + (h % 3 + 1) % 3]] &&
+             std::binary_search(changed_edges.begin(), changed_edges.end(), edge_of(h));
+    };
+    Large_vector<std::uint32_t> old_twin;
+    old_twin.swap(twin_);
+    twin_.assign(corners_.size(), UINT32_MAX);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> reset; // (edge, half-edge) to pair anew
+    for(std::size_t k = 0; k < new_position.size(); ++k) {
+      if(new_position[k] == UINT32_MAX) continue;
+      for(std::uint32_t e = 0; e < 3; ++e) {
+        const std::uint32_t h = 3 * new_position[k] + e;
+        if(is_changed(h)) {
+          reset.emplace_back(edge_of(h), h);
+          continue;
+        }
+        const std::uint32_t t = old_twin[3 * k + e];
+        CGAL_assertion(new_position[t / 3] != UINT32_MAX); // a removed facet changes its edges
+        twin_[h] = 3 * new_position[t / 3] + t % 3;
+      }
+    }
+    Large_vector<std::uint32_t>().swap(old_twin);
+    const std::uint32_t first_added = 3 * std::uint32_t(std::count_if(new_position.begin(), new_position.end(),
+                                                                       [](std::uint32_t p) { return p != UINT32_MAX; }));
+    for(std::uint32_t h = first_added; h < corners_.size(); ++h) reset.emplace_back(edge_of(h), h);
+    std::sort(reset.begin(), reset.end());
+
+    // the non-manifold edges that did not change stay counted
+    std::size_t ends = 0;
+    for(std::size_t i = 0; i + 1 < non_manifold_edge_ends_.size(); i += 2) {
+      const std::uint32_t u = non_manifold_edge_ends_[i], v = non_manifold_edge_ends_[i + 1];
+      const std::uint64_t edge = (std::uint64_t((std::min)(u, v)) << 32) | (std::max)(u, v);
+      if(std::binary_search(changed_edges.begin(), changed_edges.end(), edge)) continue;
+      non_manifold_edge_ends_[ends++] = u;
+      non_manifold_edge_ends_[ends++] = v;
+    }
+    non_manifold_edge_ends_.resize(ends);
+    stats_.non_manifold_edges = ends / 2;
+    std::vector<std::uint32_t> unpaired;
+    for(std::size_t i = 0; i < reset.size();) {
+      std::size_t j = i + 1;
+      while(j < reset.size() && reset[j].first == reset[i].first) ++j;
+      if(j - i == 2) {
+        const std::uint32_t a = reset[i].second, b = reset[i + 1].second;
+        CGAL_assertion(corners_[a] == corners_[3 * (b / 3) + (b % 3 + 1) % 3]); // opposite ways
+        twin_[a] = b;
+        twin_[b] = a;
+      } else { // a non-manifold edge (four or more): split
+        ++stats_.non_manifold_edges;
+        non_manifold_edge_ends_.push_back(std::uint32_t(reset[i].first >> 32));
+        non_manifold_edge_ends_.push_back(std::uint32_t(reset[i].first));
+        for(std::size_t g = i; g < j; ++g) unpaired.push_back(reset[g].second / 3);
+      }
+      i = j;
+    }
+    std::sort(unpaired.begin(), unpaired.end());
+    unpaired.erase(std::unique(unpaired.begin(), unpaired.end()), unpaired.end());
+    pair_around_non_manifold_edges(reader, unpaired);
   }
 
   // The corner after `c` around its vertex: the twin of the half-edge that enters the vertex
