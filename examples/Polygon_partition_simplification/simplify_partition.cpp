@@ -10,6 +10,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/WKT.h>
 #include <CGAL/Polygon_partition_simplification/IO/GeoJSON.h>
+#include <CGAL/Polygon_partition_simplification/IO/segments_file.h>
 #include <CGAL/kinetic_partition_2.h>
 #include <CGAL/simplify_polygon_partition_2.h>
 
@@ -29,27 +30,6 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 namespace PPS = CGAL::Polygon_partition_simplification;
 using Partition = PPS::Line_partition_2<K>;
-
-static std::vector<K::Segment_2> read_segments(const std::string& file)
-{
-  std::ifstream in(file);
-  if(!in || !std::filesystem::is_regular_file(file)) throw std::runtime_error("cannot read " + file);
-  std::vector<K::Segment_2> segments;
-  std::string line;
-  for(std::size_t number = 1; std::getline(in, line); ++number) {
-    std::istringstream is(line);
-    std::string first;
-    if(!(is >> first) || first[0] == '#') continue;
-    is.str(line);
-    is.clear();
-    double c[4];
-    std::string rest;
-    if(!(is >> c[0] >> c[1] >> c[2] >> c[3]) || (is >> rest))
-      throw std::runtime_error(file + ":" + std::to_string(number) + ": expected four numbers x0 y0 x1 y1");
-    segments.emplace_back(K::Point_2(c[0], c[1]), K::Point_2(c[2], c[3]));
-  }
-  return segments;
-}
 
 static std::string extension(const std::string& file)
 {
@@ -113,7 +93,7 @@ int main(int argc, char** argv)
     // both files are created (empty, under their temporary names) before the work
     if(!std::ofstream(temporary)) throw std::runtime_error("cannot write " + output);
     if(!svg.empty() && !std::ofstream(svg_temporary)) throw std::runtime_error("cannot write " + svg);
-    const std::vector<K::Segment_2> segments = read_segments(input);
+    const std::vector<K::Segment_2> segments = PPS::IO::read_segments_2<K>(input);
 
     const auto t0 = std::chrono::steady_clock::now();
     Partition partition = CGAL::kinetic_partition_2(segments);

@@ -23,7 +23,9 @@ enum class Input_error_code
   ZERO_LENGTH_SEGMENT,    ///< a segment whose two endpoints are equal, or too close for double precision
   DUPLICATED_SEGMENT,     ///< the same segment given twice (in either orientation)
   NO_CELL,                ///< the input bounds no cell (all its edges dangle)
-  INVALID_PARAMETER       ///< a parameter is out of its range (negative weight, step ratio not in (0,1), ...)
+  INVALID_PARAMETER,      ///< a parameter is out of its range (negative weight, step ratio not in (0,1), ...)
+  UNREADABLE_FILE,        ///< an input file cannot be opened, or is not a regular file
+  MALFORMED_FILE          ///< a line of an input file is not in the expected format
 };
 
 /*!
