@@ -18,9 +18,12 @@ endif()
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   add_compile_options(-Wall -Wextra)
 endif()
+# Paths below the checkout are hashed relative to it (CCACHE_BASEDIR), so that a clean clone
+# elsewhere, as CI makes, finds the objects of an earlier one.
 find_program(CCACHE_PROGRAM ccache)
 if(CCACHE_PROGRAM)
-  set(CMAKE_CXX_COMPILER_LAUNCHER "${CCACHE_PROGRAM}")
+  get_filename_component(urban_checkout "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+  set(CMAKE_CXX_COMPILER_LAUNCHER "${CMAKE_COMMAND}" -E env "CCACHE_BASEDIR=${urban_checkout}" "${CCACHE_PROGRAM}")
 endif()
 
 # A test folder configured on its own (cmake -S test/<Pkg>), as CGAL's test suite does: the

@@ -4,14 +4,23 @@
 #                                     kitten.xyz (closed) and b9_training.ply (open: aerial
 #                                     LiDAR), real scans from libcgal-demo, and simplify the
 #                                     kinetic partition of 25 synthetic building footprints
-#   bash scripts/quickstart.sh test   same set-up, then build and run all tests with ctest
+#   bash scripts/quickstart.sh test   same set-up plus Qt5 and Xvfb, then build and run all tests
+#                                     with ctest, the headless tests of the demo plugins included
+#   bash scripts/quickstart.sh demo   same set-up, builds CGAL's Polyhedron demo with the plugins
+#                                     of both packages (build-demo/) and starts it on kitten.xyz
+#                                     and the 25 footprints (with a display; without one, says
+#                                     how to start it)
 set -euo pipefail
 mode="${1:-run}"
-case "$mode" in run|test) ;; *) echo "usage: $0 run|test" >&2; exit 2 ;; esac
+case "$mode" in run|test|demo) ;; *) echo "usage: $0 run|test|demo" >&2; exit 2 ;; esac
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make ccache libcgal-dev libcgal-demo libeigen3-dev libtbb-dev libgmp-dev
           libmpfr-dev libboost-dev libboost-timer-dev libcli11-dev nlohmann-json3-dev doxygen)
+# the Polyhedron demo (Qt5, QtScript, CGAL's Qt5 headers) and its headless run (Xvfb, Mesa)
+if [ "$mode" != run ]; then
+  packages+=(qtbase5-dev qtscript5-dev libqt5svg5-dev libqt5opengl5-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -39,8 +48,18 @@ if [ "$mode" = run ]; then
   echo "The reconstructed surfaces are in $(pwd)/results/: kitten_closed.off (closed surface)" \
        "and b9_training_open.off (terrain bounded by its footprint); the simplified partition of" \
        "25 synthetic footprints: footprints_25_simplified.geojson (cells) and .svg (before/after)"
+elif [ "$mode" = demo ]; then
+  cmake -S demo -B build-demo -DCMAKE_BUILD_TYPE=Release
+  cmake --build build-demo -j"$jobs" --target urban_demo
+  demo_command=(build-demo/polyhedron/Polyhedron_3 build-demo/cgal-data/data/points_3/kitten.xyz
+                examples/Polygon_partition_simplification/data/footprints_25.txt)
+  if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    exec "${demo_command[@]}"
+  fi
+  echo "The demo is built; no display here. On a display, start it with: ${demo_command[*]}" \
+       "(Operations > Point Set Processing > Surface Reconstruction, Operations on Polylines > Polygon Partition)"
 else
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DURBAN_BUILD_DEMO=ON
   cmake --build build -j"$jobs"
   cd build
   ctest --output-on-failure -j"$jobs"
