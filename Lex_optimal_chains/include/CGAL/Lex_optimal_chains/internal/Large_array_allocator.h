@@ -7,8 +7,8 @@
 // The allocator of the package's arrays of one entry per facet, half-edge or record (tens to
 // hundreds of megabytes). Such an array is written once, at random or in one pass, soon after
 // it is allocated, so the first touch of its pages costs as much as its use: one page fault
-// per 4 KiB page, in which the kernel zeroes the page (and, in a virtual machine, the host may
-// back it). On Linux, arrays of 8 MiB or more are aligned on 2 MiB and marked with
+// per 4 KiB page, in which the kernel zeroes the page (and, under a hypervisor, the host may
+// have to back it). On Linux, arrays of 8 MiB or more are aligned on 2 MiB and marked with
 // `madvise(MADV_HUGEPAGE)`: with transparent huge pages in their default `madvise` mode, the
 // kernel then backs them with 2 MiB pages, one fault for 512 small ones. Smaller arrays are
 // left to `std::allocator`: a huge page is committed whole, and the rounding of many small
