@@ -35,7 +35,7 @@ endif()
 
 find_package(CGAL 5.5 REQUIRED)
 find_package(Eigen3 3.3 QUIET)
-if(TARGET Eigen3::Eigen)
+if(EIGEN3_FOUND OR TARGET Eigen3::Eigen)
   include(CGAL_Eigen3_support)
 endif()
 if(LEX_WITH_TBB)
@@ -56,6 +56,10 @@ if(NOT TARGET Polygon_partition_simplification)
   target_include_directories(Polygon_partition_simplification INTERFACE
     "${URBAN_PACKAGES_ROOT}/Polygon_partition_simplification/include")
   target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::CGAL)
+  # the LOD2 pipeline: normals (jet fitting) and plane fitting need Eigen
+  if(TARGET CGAL::Eigen3_support)
+    target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::Eigen3_support)
+  endif()
 endif()
 
 # Real data shipped by Debian's libcgal-demo, unpacked in the build tree (never committed).

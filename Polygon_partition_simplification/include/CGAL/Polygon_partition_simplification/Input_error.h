@@ -25,7 +25,10 @@ enum class Input_error_code
   NO_CELL,                ///< the input bounds no cell (all its edges dangle)
   INVALID_PARAMETER,      ///< a parameter is out of its range (negative weight, step ratio not in (0,1), ...)
   UNREADABLE_FILE,        ///< an input file cannot be opened, or is not a regular file
-  MALFORMED_FILE          ///< a line of an input file is not in the expected format
+  MALFORMED_FILE,         ///< a line of an input file is not in the expected format
+  NO_PLANE,               ///< no roof plane found in a point cloud (too few points, or too noisy for the plane distance)
+  NO_HORIZONTAL_EXTENT,   ///< the points of a building reconstruction have no extent in the horizontal plane
+  MISSING_PROPERTY        ///< a mesh lacks a property map that the function reads, or has it with another value type
 };
 
 /*!

@@ -28,6 +28,13 @@ enum maximum_number_of_crossings_t { maximum_number_of_crossings };
 enum crossing_distance_t { crossing_distance };
 enum bounding_box_margin_t { bounding_box_margin };
 enum collinearity_distance_t { collinearity_distance };
+enum maximum_distance_t { maximum_distance };
+enum minimum_region_size_t { minimum_region_size };
+enum height_threshold_t { height_threshold };
+enum regularization_length_t { regularization_length };
+enum facade_weight_t { facade_weight };
+enum minimum_building_height_t { minimum_building_height };
+enum height_tolerance_t { height_tolerance };
 
 } // namespace internal_np
 
@@ -74,6 +81,22 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(bounding_box_margin)
 /// segments within this distance of the line of a longer one are moved onto it before a
 /// kinetic partition (input units)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(collinearity_distance)
+
+/// largest distance of a point to its plane in a plane detection (input units)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(maximum_distance)
+/// smallest number of points of a detected plane
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(minimum_region_size)
+/// \f$\epsilon\f$ of the lift's data term (Eq. 3.1): vertical distance beyond which a point
+/// counts the same (input units)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(height_threshold)
+/// \f$\mu\f$ of the lift (a length: the smallest feature to keep)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(regularization_length)
+/// factor of the lift's smoothness term on edges along facade segments (in [0, 1])
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(facade_weight)
+/// smallest height of a roof above the ground (input units)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(minimum_building_height)
+/// roof heights closer than this at a point of the partition are made equal (no wall between them)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(height_tolerance)
 
 #undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER
 

@@ -1,0 +1,117 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_CELL_ARRANGEMENT_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_CELL_ARRANGEMENT_2_H
+
+#include <CGAL/license/Polygon_partition_simplification.h>
+
+#include <CGAL/Arr_extended_dcel.h>
+#include <CGAL/Arr_landmarks_point_location.h>
+#include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+/// The cells of a partition as the faces of a CGAL arrangement, each face knowing its cell.
+/// The points of the cells are doubles and their edges do not cross, so the arrangement needs
+/// exact predicates only, which Epick's filtered predicates give on the doubles.
+struct Cell_arrangement_2
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Point_2 = Kernel::Point_2;
+  using Traits = CGAL::Arr_non_caching_segment_basic_traits_2<Kernel>;
+  /// face data: the cell of the face, `no_cell` for the unbounded face
+  using Dcel = CGAL::Arr_face_extended_dcel<Traits, std::size_t>;
+  using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
+  static constexpr std::size_t no_cell = std::numeric_limits<std::size_t>::max();
+
+  Arrangement arrangement;
+  std::vector<std::vector<std::vector<Point_2>>> rings; ///< per cell: outer ring (counterclockwise), holes (clockwise)
+
+  /// the arrangement of `cells` (polygons with holes of any CGAL kernel, the cells of a valid
+  /// partition: they meet only along their edges)
+  template <class PolygonWithHolesRange>
+  explicit Cell_arrangement_2(const PolygonWithHolesRange& cells)
+  {
+    std::map<std::pair<Point_2, Point_2>, std::size_t> cell_left_of;
+    std::vector<Traits::X_monotone_curve_2> segments;
+    auto add_ring = [&](const auto& polygon, std::size_t cell, bool reverse) {
+      std::vector<Point_2> ring;
+      for(auto p = polygon.vertices_begin(); p != polygon.vertices_end(); ++p)
+        ring.emplace_back(CGAL::to_double(p->x()), CGAL::to_double(p->y()));
+      if(reverse) std::reverse(ring.begin(), ring.end());
+      for(std::size_t i = 0; i < ring.size(); ++i) {
+        const Point_2& a = ring[i];
+        const Point_2& b = ring[(i + 1) % ring.size()];
+        cell_left_of[{a, b}] = cell;
+        if(cell_left_of.find({b, a}) == cell_left_of.end()) segments.emplace_back(a, b);
+      }
+      rings.back().push_back(std::move(ring));
+    };
+    std::size_t cell = 0;
+    for(const auto& polygon : cells) {
+      rings.emplace_back();
+      const bool outer_clockwise = polygon.outer_boundary().orientation() == CGAL::CLOCKWISE;
+      add_ring(polygon.outer_boundary(), cell, outer_clockwise);
+      for(auto h = polygon.holes_begin(); h != polygon.holes_end(); ++h)
+        add_ring(*h, cell, h->orientation() == CGAL::COUNTERCLOCKWISE);
+      ++cell;
+    }
+    CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
+    for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) f->set_data(no_cell);
+    for(auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h) {
+      const auto found = cell_left_of.find({h->source()->point(), h->target()->point()});
+      if(found != cell_left_of.end()) h->face()->set_data(found->second);
+    }
+  }
+
+  std::size_t number_of_cells() const { return rings.size(); }
+
+  /// the cell of each point (x, y, z) of `points`, `no_cell` outside every cell; a point on an edge
+  /// or a vertex goes to a cell incident to it (the face of the edge's halfedge directed from
+  /// the smaller endpoint, the first cell found around the vertex)
+  std::vector<std::size_t> locate(const std::vector<std::array<double, 3>>& points) const
+  {
+    CGAL::Arr_landmarks_point_location<Arrangement> locator(arrangement);
+    std::vector<std::size_t> result;
+    result.reserve(points.size());
+    for(const auto& p : points) {
+      const auto where = locator.locate(Point_2(p[0], p[1]));
+      std::size_t cell = no_cell;
+      if(const auto* face = boost::get<typename Arrangement::Face_const_handle>(&where)) {
+        cell = (*face)->data();
+      } else if(const auto* edge = boost::get<typename Arrangement::Halfedge_const_handle>(&where)) {
+        auto h = *edge;
+        if(h->source()->point() > h->target()->point()) h = h->twin();
+        cell = h->face()->data() != no_cell ? h->face()->data() : h->twin()->face()->data();
+      } else if(const auto* vertex = boost::get<typename Arrangement::Vertex_const_handle>(&where)) {
+        auto around = (*vertex)->incident_halfedges(), start = around;
+        if(!(*vertex)->is_isolated()) do {
+            if(around->face()->data() != no_cell) {
+              cell = around->face()->data();
+              break;
+            }
+          } while(++around != start);
+      }
+      result.push_back(cell);
+    }
+    return result;
+  }
+};
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_CELL_ARRANGEMENT_2_H

@@ -1,0 +1,159 @@
+// Copyright (c) 2026  The Polygon_partition_simplification authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_LABEL_CELLS_2_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_LABEL_CELLS_2_H
+
+#include <CGAL/license/Polygon_partition_simplification.h>
+
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/Cell_arrangement_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/Height_functions.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/runs_along_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_partition_simplification {
+namespace internal {
+
+/// The settings of the lift, in input units.
+struct Lift_settings
+{
+  double height_threshold = 1;        ///< epsilon of Eq. 3.1
+  double regularization_length = 1;   ///< mu of the lift energy
+  double facade_weight = 0.25;        ///< factor of the smoothness on edges along facade segments
+  double minimum_building_height = 1; ///< a roof is at least this high above the ground at every corner
+  double facade_distance = 0.5;       ///< an edge within this distance of a facade segment is along it
+};
+
+/// An edge of the cell arrangement for the lift: its two cells, its ends, its weight.
+struct Lift_edge
+{
+  std::size_t left = 0, right = 0; ///< the cells on both sides (`Cell_arrangement_2::no_cell` outside)
+  std::array<double, 2> source{{0, 0}}, target{{0, 0}};
+  double weight = 0; ///< mu * p_e * length
+};
+
+/// the edges of the arrangement for the lift, each once, in the arrangement's order
+template <class Segment2Range>
+std::vector<Lift_edge> lift_edges(const Cell_arrangement_2& cells, const Segment2Range& facades,
+                                  const Lift_settings& settings)
+{
+  std::vector<Lift_edge> edges;
+  for(auto e = cells.arrangement.edges_begin(); e != cells.arrangement.edges_end(); ++e) {
+    Lift_edge edge;
+    edge.left = e->face()->data();
+    edge.right = e->twin()->face()->data();
+    if(edge.left == edge.right) continue;
+    edge.source = {e->source()->point().x(), e->source()->point().y()};
+    edge.target = {e->target()->point().x(), e->target()->point().y()};
+    const double length = std::hypot(edge.target[0] - edge.source[0], edge.target[1] - edge.source[1]);
+    const double prior = runs_along(edge.source, edge.target, facades, settings.facade_distance)
+                           ? settings.facade_weight : 1.0;
+    edge.weight = settings.regularization_length * prior * length;
+    edges.push_back(edge);
+  }
+  return edges;
+}
+
+/// V_e of Eq. 3.2 for labels a and b (without mu p_e length)
+inline double mean_height_difference(const Height_functions& heights, const Lift_edge& edge, std::size_t a,
+                                     std::size_t b)
+{
+  return 0.5 * (std::abs(heights.height(a, edge.source) - heights.height(b, edge.source)) +
+                std::abs(heights.height(a, edge.target) - heights.height(b, edge.target)));
+}
+
+/// the data term of Eq. 3.1 for every cell and label; a cell without points costs nothing on
+/// the ground and `height_threshold * area` on a roof (no evidence of a building); a roof label
+/// whose plane is less than `minimum_building_height` above the ground at a corner of the cell
+/// is forbidden (+infinity)
+inline std::vector<std::vector<double>> lift_data_term(const Cell_arrangement_2& cells,
+                                                       const std::vector<std::array<double, 3>>& points,
+                                                       const std::vector<std::size_t>& cell_of_point,
+                                                       const Height_functions& heights, const Lift_settings& settings)
+{
+  const std::size_t labels = heights.number_of_labels();
+  std::vector<std::vector<double>> cost(cells.number_of_cells(), std::vector<double>(labels, 0));
+  std::vector<std::size_t> count(cells.number_of_cells(), 0);
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t c = cell_of_point[i];
+    if(c == Cell_arrangement_2::no_cell) continue;
+    ++count[c];
+    const std::array<double, 2> xy{{points[i][0], points[i][1]}};
+    for(std::size_t l = 0; l < labels; ++l)
+      cost[c][l] += std::min(settings.height_threshold, std::abs(points[i][2] - heights.height(l, xy)));
+  }
+  for(std::size_t c = 0; c < cells.number_of_cells(); ++c) {
+    double area = 0;
+    for(const auto& ring : cells.rings[c]) {
+      for(std::size_t i = 0; i < ring.size(); ++i) {
+        const auto& p = ring[i];
+        const auto& q = ring[(i + 1) % ring.size()];
+        area += 0.5 * (p.x() * q.y() - q.x() * p.y());
+      }
+    }
+    for(std::size_t l = 0; l < labels; ++l) {
+      cost[c][l] = count[c] > 0 ? area * cost[c][l] / double(count[c])
+                                : (l == Height_functions::ground_label ? 0 : area * settings.height_threshold);
+      for(const auto& ring : cells.rings[c])
+        for(const auto& p : ring) {
+          const std::array<double, 2> xy{{p.x(), p.y()}};
+          if(l != Height_functions::ground_label &&
+             heights.height(l, xy) < heights.height(Height_functions::ground_label, xy) + settings.minimum_building_height)
+            cost[c][l] = std::numeric_limits<double>::infinity();
+        }
+    }
+  }
+  return cost;
+}
+
+/// the label of every cell (section 3.2.3): the ground or a roof plane, minimizing
+/// sum_C E_C + mu sum_e V_e by alpha-expansion; the outside of the partition is ground
+inline std::vector<std::size_t> label_cells(const Cell_arrangement_2& cells, const std::vector<Lift_edge>& edges,
+                                            std::vector<std::vector<double>> cost, const Height_functions& heights)
+{
+  const std::size_t none = Cell_arrangement_2::no_cell;
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> edges_of_pair;
+  for(std::size_t e = 0; e < edges.size(); ++e) {
+    const Lift_edge& edge = edges[e];
+    if(edge.left == none || edge.right == none) { // against the outside, which is ground
+      const std::size_t c = edge.left == none ? edge.right : edge.left;
+      for(std::size_t l = 0; l < heights.number_of_labels(); ++l)
+        cost[c][l] += edge.weight * mean_height_difference(heights, edge, l, Height_functions::ground_label);
+      continue;
+    }
+    edges_of_pair[{std::min(edge.left, edge.right), std::max(edge.left, edge.right)}].push_back(e);
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> graph_edges;
+  std::vector<std::vector<std::size_t>> arrangement_edges;
+  for(auto& entry : edges_of_pair) {
+    graph_edges.push_back(entry.first);
+    arrangement_edges.push_back(std::move(entry.second));
+  }
+  auto pairwise = [&](std::size_t g, std::size_t a, std::size_t b) {
+    double sum = 0;
+    if(a != b)
+      for(std::size_t e : arrangement_edges[g]) sum += edges[e].weight * mean_height_difference(heights, edges[e], a, b);
+    return sum;
+  };
+  std::vector<std::size_t> labels(cells.number_of_cells(), Height_functions::ground_label);
+  for(std::size_t c = 0; c < labels.size(); ++c)
+    labels[c] = std::size_t(std::min_element(cost[c].begin(), cost[c].end()) - cost[c].begin());
+  Metric_alpha_expansion<decltype(pairwise)> expansion(graph_edges, cost, pairwise);
+  expansion.minimize(labels);
+  return labels;
+}
+
+} // namespace internal
+} // namespace Polygon_partition_simplification
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_LABEL_CELLS_2_H

@@ -1,0 +1,694 @@
+// Two parts of the LOD2 building reconstruction, each against oracles written elsewhere:
+// - internal::Metric_alpha_expansion, on many small random graphs, against brute force over all
+//   labelings and all expansion moves: the result is a local minimum for every expansion move
+//   and within the bound of Boykov, Veksler and Zabih (2 max V / min V times the optimum), for
+//   metrics |h_a - h_b|, truncated |h_a - h_b|, Potts and the lift's plane metric; zero pairwise
+//   weights give the unary minimum; forbidden (infinite) labels are left wherever an allowed one
+//   exists; the same input gives the same labels; on Potts instances CGAL's
+//   alpha_expansion_graphcut is held to the same bound. A larger grid is checked against every
+//   single-vertex change.
+// - IO::write_CityJSON, on two hand-made buildings (a gable roof and a box that touches it),
+//   read back with nlohmann::json: the CityJSON structure, semantics matching the faces, every
+//   surface equal to a face of the mesh with the same orientation, vertices unique and within
+//   half a unit of the scale of the originals, each shell closed and outward (rebuilt as a
+//   Surface_mesh, CGAL's is_closed, is_outward_oriented and the volume of its triangulation);
+//   missing property maps, bad precision and non-finite coordinates throw Input_error and write
+//   nothing; the output does not depend on the locale.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
+#include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
+#include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/alpha_expansion_graphcut.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <locale>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
+
+namespace PPS = CGAL::Polygon_partition_simplification;
+
+// ---------------------------------------------------------------------------------------------
+// Alpha-expansion
+
+using Edge = std::pair<std::size_t, std::size_t>;
+using Pairwise = std::function<double(std::size_t, std::size_t, std::size_t)>;
+using Labels = std::vector<std::size_t>;
+const double infinity = std::numeric_limits<double>::infinity();
+
+struct Instance
+{
+  std::size_t number_of_vertices = 0, number_of_labels = 0;
+  std::vector<Edge> edges;
+  std::vector<double> weights;
+  std::vector<std::vector<double>> unary;  // [vertex][label], +infinity: forbidden
+  Pairwise pairwise;                        // (edge, label of first vertex, label of second)
+  double ratio = 0;                         // BVZ's max V / min nonzero V (0: no bound)
+};
+
+// the energy, computed here independently of the class under test
+double energy(const Instance& instance, const Labels& labels)
+{
+  double result = 0;
+  for(std::size_t v = 0; v < labels.size(); ++v)
+    result += instance.unary[v][labels[v]];
+  for(std::size_t e = 0; e < instance.edges.size(); ++e)
+    result += instance.pairwise(e, labels[instance.edges[e].first], labels[instance.edges[e].second]);
+  return result;
+}
+
+double optimum(const Instance& instance)
+{
+  Labels labels(instance.number_of_vertices, 0);
+  double best = infinity;
+  for(;;) {
+    best = (std::min)(best, energy(instance, labels));
+    std::size_t v = 0;
+    while(v < labels.size() && ++labels[v] == instance.number_of_labels)
+      labels[v++] = 0;
+    if(v == labels.size())
+      return best;
+  }
+}
+
+// the lowest energy of all expansion moves of `alpha` from `labels` (every subset of vertices)
+double best_expansion(const Instance& instance, const Labels& labels, std::size_t alpha)
+{
+  double best = infinity;
+  const std::size_t n = labels.size();
+  for(std::size_t subset = 0; subset < (std::size_t(1) << n); ++subset) {
+    Labels moved = labels;
+    for(std::size_t v = 0; v < n; ++v)
+      if(subset & (std::size_t(1) << v))
+        moved[v] = alpha;
+    best = (std::min)(best, energy(instance, moved));
+  }
+  return best;
+}
+
+bool is_expansion_local_minimum(const Instance& instance, const Labels& labels)
+{
+  const double current = energy(instance, labels);
+  for(std::size_t alpha = 0; alpha < instance.number_of_labels; ++alpha)
+    if(best_expansion(instance, labels, alpha) < current - 1e-7 * (1 + std::abs(current)))
+      return false;
+  return true;
+}
+
+enum class Metric_kind { HEIGHT, TRUNCATED_HEIGHT, POTTS, PLANES };
+
+Instance random_instance(std::mt19937& random, Metric_kind kind, double forbidden_probability = 0)
+{
+  std::uniform_real_distribution<double> unit(0, 1);
+  Instance instance;
+  instance.number_of_vertices = 4 + random() % 4;
+  instance.number_of_labels = 2 + random() % 3;
+  const std::size_t n = instance.number_of_vertices, labels = instance.number_of_labels;
+  instance.unary.assign(n, std::vector<double>(labels));
+  for(std::size_t v = 0; v < n; ++v) {
+    for(double& cost : instance.unary[v])
+      cost = unit(random) < forbidden_probability ? infinity : 10 * unit(random);
+    if(std::all_of(instance.unary[v].begin(), instance.unary[v].end(), [](double c) { return c == infinity; }))
+      instance.unary[v][random() % labels] = 10 * unit(random);
+  }
+  for(std::size_t u = 0; u < n; ++u)
+    for(std::size_t v = u + 1; v < n; ++v)
+      if(unit(random) < 0.5) {
+        instance.edges.emplace_back(u, v);
+        instance.weights.push_back(3 * unit(random));
+      }
+  if(instance.edges.empty()) {
+    instance.edges.emplace_back(0, 1);
+    instance.weights.push_back(1);
+  }
+  const std::vector<double> w = instance.weights;
+  if(kind == Metric_kind::POTTS) {
+    instance.pairwise = [w](std::size_t e, std::size_t a, std::size_t b) { return a == b ? 0. : w[e]; };
+    instance.ratio = 1;
+    return instance;
+  }
+  if(kind == Metric_kind::PLANES) {
+    // label l: the plane z = p0 + p1 x + p2 y; edge e: two endpoints; the lift's cost
+    // w_e * 1/2 * sum over the endpoints of the difference of the heights of the two planes
+    std::vector<std::array<double, 3>> planes(labels);
+    for(auto& p : planes)
+      p = {{10 * unit(random), unit(random) - 0.5, unit(random) - 0.5}};
+    std::vector<std::array<double, 4>> ends(instance.edges.size());
+    for(auto& x : ends)
+      x = {{10 * unit(random), 10 * unit(random), 10 * unit(random), 10 * unit(random)}};
+    instance.pairwise = [w, planes, ends](std::size_t e, std::size_t a, std::size_t b) {
+      double sum = 0;
+      for(int i = 0; i < 2; ++i) {
+        const double x = ends[e][2 * i], y = ends[e][2 * i + 1];
+        sum += std::abs((planes[a][0] + planes[a][1] * x + planes[a][2] * y) -
+                        (planes[b][0] + planes[b][1] * x + planes[b][2] * y));
+      }
+      return w[e] * sum / 2;
+    };
+    // per-edge metrics: the bound takes the largest ratio over the edges
+    double ratio = 1;
+    for(std::size_t e = 0; e < instance.edges.size(); ++e) {
+      double smallest = infinity, largest = 0;
+      for(std::size_t a = 0; a < labels; ++a)
+        for(std::size_t b = a + 1; b < labels; ++b) {
+          const double cost = instance.pairwise(e, a, b);
+          smallest = (std::min)(smallest, cost);
+          largest = (std::max)(largest, cost);
+        }
+      ratio = (smallest > 1e-9 * largest) ? (std::max)(ratio, largest / smallest) : 0;
+      if(ratio == 0)
+        break;
+    }
+    instance.ratio = ratio;
+    return instance;
+  }
+  // distinct heights, at least 0.1 apart
+  std::vector<double> heights;
+  while(heights.size() < labels) {
+    const double h = 10 * unit(random);
+    if(std::all_of(heights.begin(), heights.end(), [h](double g) { return std::abs(g - h) >= 0.1; }))
+      heights.push_back(h);
+  }
+  const double truncation = kind == Metric_kind::TRUNCATED_HEIGHT ? 1 + 4 * unit(random) : infinity;
+  auto metric = [heights, truncation](std::size_t a, std::size_t b) {
+    return (std::min)(truncation, std::abs(heights[a] - heights[b]));
+  };
+  instance.pairwise = [w, metric](std::size_t e, std::size_t a, std::size_t b) { return w[e] * metric(a, b); };
+  double smallest = infinity, largest = 0;
+  for(std::size_t a = 0; a < labels; ++a)
+    for(std::size_t b = a + 1; b < labels; ++b) {
+      smallest = (std::min)(smallest, metric(a, b));
+      largest = (std::max)(largest, metric(a, b));
+    }
+  instance.ratio = largest / smallest;
+  return instance;
+}
+
+Labels random_labels(std::mt19937& random, const Instance& instance)
+{
+  Labels labels(instance.number_of_vertices);
+  for(std::size_t& l : labels)
+    l = random() % instance.number_of_labels;
+  return labels;
+}
+
+using Expansion = PPS::internal::Metric_alpha_expansion<Pairwise>;
+
+// runs the class under test from `start` and checks what holds on every instance; returns the
+// labels
+Labels run_and_check(const Instance& instance, const Labels& start)
+{
+  const Expansion expansion(instance.edges, instance.unary, instance.pairwise);
+  Labels labels = start;
+  const Expansion::Result result = expansion.minimize(labels);
+  CHECK(labels.size() == instance.number_of_vertices);
+  for(std::size_t l : labels)
+    CHECK(l < instance.number_of_labels);
+  CHECK(result.number_of_cycles >= 1);
+  CHECK(std::abs(result.energy - expansion.energy(labels)) <= 1e-12 * (1 + std::abs(result.energy)));
+  CHECK(result.energy <= expansion.energy(start));
+  // deterministic
+  Labels again = start;
+  const Expansion::Result second = expansion.minimize(again);
+  CHECK(again == labels && second.energy == result.energy && second.number_of_cycles == result.number_of_cycles);
+  return labels;
+}
+
+void test_alpha_expansion_against_brute_force()
+{
+  std::mt19937 random(20260612);
+  const Metric_kind kinds[] = {Metric_kind::HEIGHT, Metric_kind::TRUNCATED_HEIGHT, Metric_kind::POTTS, Metric_kind::PLANES};
+  const char* names[] = {"height", "truncated height", "Potts", "planes"};
+  for(int k = 0; k < 4; ++k) {
+    std::size_t optimal = 0, instances = 0, bounded = 0;
+    double worst_ratio = 1;
+    for(int trial = 0; trial < 150; ++trial) {
+      const Instance instance = random_instance(random, kinds[k]);
+      const Labels start = (trial % 2) ? random_labels(random, instance)
+                                       : Expansion(instance.edges, instance.unary, instance.pairwise).unary_minimum_labels();
+      const Labels labels = run_and_check(instance, start);
+      const double ours = energy(instance, labels), best = optimum(instance);
+      CHECK(is_expansion_local_minimum(instance, labels));
+      CHECK(ours >= best - 1e-9 * (1 + best));
+      if(instance.ratio > 0) {
+        CHECK(ours <= 2 * instance.ratio * best + 1e-9 * (1 + best));
+        ++bounded;
+      }
+      ++instances;
+      if(ours <= best + 1e-9 * (1 + best))
+        ++optimal;
+      else
+        worst_ratio = (std::max)(worst_ratio, ours / best);
+    }
+    std::cout << "alpha-expansion, " << names[k] << ": " << optimal << " optimal of " << instances
+              << " (" << bounded << " with the BVZ bound), worst energy / optimum " << worst_ratio << std::endl;
+  }
+}
+
+// Potts instances: CGAL's alpha_expansion_graphcut from the same start, held to the same bound
+void test_alpha_expansion_against_CGAL()
+{
+  std::mt19937 random(7);
+  std::size_t theirs_local_minima = 0, ours_lower = 0, theirs_lower = 0, instances = 200;
+  for(std::size_t trial = 0; trial < instances; ++trial) {
+    const Instance instance = random_instance(random, Metric_kind::POTTS);
+    const Labels start = random_labels(random, instance);
+    const Labels ours = run_and_check(instance, start);
+    std::vector<std::vector<double>> cost_matrix(instance.number_of_labels,
+                                                 std::vector<double>(instance.number_of_vertices));
+    for(std::size_t v = 0; v < instance.number_of_vertices; ++v)
+      for(std::size_t l = 0; l < instance.number_of_labels; ++l)
+        cost_matrix[l][v] = instance.unary[v][l];
+    Labels theirs = start;
+    CGAL::alpha_expansion_graphcut(instance.edges, instance.weights, cost_matrix, theirs);
+    const double best = optimum(instance), ours_energy = energy(instance, ours), theirs_energy = energy(instance, theirs);
+    CHECK(is_expansion_local_minimum(instance, ours));
+    CHECK(ours_energy <= 2 * best + 1e-9 * (1 + best));
+    CHECK(theirs_energy <= 2 * best + 1e-9 * (1 + best));
+    if(is_expansion_local_minimum(instance, theirs))
+      ++theirs_local_minima;
+    if(ours_energy < theirs_energy - 1e-9 * (1 + best))
+      ++ours_lower;
+    if(theirs_energy < ours_energy - 1e-9 * (1 + best))
+      ++theirs_lower;
+  }
+  std::cout << "Potts against CGAL::alpha_expansion_graphcut on " << instances << " instances: ours lower "
+            << ours_lower << ", CGAL's lower " << theirs_lower << ", CGAL's a local minimum "
+            << theirs_local_minima << std::endl;
+}
+
+void test_alpha_expansion_special_cases()
+{
+  std::mt19937 random(11);
+  // zero pairwise weights: the unary minimum, from any start
+  for(int trial = 0; trial < 100; ++trial) {
+    Instance instance = random_instance(random, Metric_kind(trial % 4));
+    instance.pairwise = [](std::size_t, std::size_t, std::size_t) { return 0.; };
+    const Labels labels = run_and_check(instance, random_labels(random, instance));
+    for(std::size_t v = 0; v < instance.number_of_vertices; ++v)
+      CHECK(labels[v] == std::size_t(std::min_element(instance.unary[v].begin(), instance.unary[v].end()) -
+                                     instance.unary[v].begin()));
+  }
+  // forbidden labels: never kept where an allowed one exists, even from a start on forbidden
+  // labels; the result is a local minimum of the true energy, within the bound
+  for(int trial = 0; trial < 150; ++trial) {
+    const Instance instance = random_instance(random, Metric_kind(trial % 4), 0.4);
+    const Labels labels = run_and_check(instance, random_labels(random, instance));
+    for(std::size_t v = 0; v < instance.number_of_vertices; ++v)
+      CHECK(instance.unary[v][labels[v]] != infinity);
+    const double ours = energy(instance, labels), best = optimum(instance);
+    const Expansion expansion(instance.edges, instance.unary, instance.pairwise);
+    CHECK(expansion.forbidden_cost() > 0 || std::none_of(instance.unary.begin(), instance.unary.end(),
+          [](const std::vector<double>& row) { return std::count(row.begin(), row.end(), infinity) > 0; }));
+    CHECK(std::abs(ours - expansion.energy(labels)) <= 1e-9 * (1 + ours));
+    CHECK(is_expansion_local_minimum(instance, labels));
+    if(instance.ratio > 0)
+      CHECK(ours <= 2 * instance.ratio * best + 1e-9 * (1 + best));
+  }
+  // a vertex with no allowed label: the others still get allowed ones
+  {
+    Instance instance = random_instance(random, Metric_kind::HEIGHT, 0.3);
+    std::fill(instance.unary[0].begin(), instance.unary[0].end(), infinity);
+    const Labels labels = run_and_check(instance, random_labels(random, instance));
+    for(std::size_t v = 1; v < instance.number_of_vertices; ++v)
+      CHECK(instance.unary[v][labels[v]] != infinity);
+  }
+}
+
+// a 30 x 30 grid with 8 labels: no single-vertex change lowers the energy (each is an
+// expansion move)
+void test_alpha_expansion_on_a_grid()
+{
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const std::size_t side = 30, labels = 8, n = side * side;
+  Instance instance;
+  instance.number_of_vertices = n;
+  instance.number_of_labels = labels;
+  instance.unary.assign(n, std::vector<double>(labels));
+  std::vector<double> heights(labels);
+  for(std::size_t l = 0; l < labels; ++l)
+    heights[l] = double(l) + 0.3 * unit(random);
+  for(std::size_t v = 0; v < n; ++v) {
+    const double truth = (v % side < side / 2 ? 2. : 5.) + (v / side < side / 3 ? 1. : 0.);
+    for(std::size_t l = 0; l < labels; ++l)
+      instance.unary[v][l] = (std::min)(2., std::abs(heights[l] - truth + 2 * (unit(random) - 0.5)));
+  }
+  for(std::size_t v = 0; v < n; ++v) {
+    if(v % side + 1 < side) instance.edges.emplace_back(v, v + 1);
+    if(v + side < n) instance.edges.emplace_back(v, v + side);
+  }
+  std::vector<double> w(instance.edges.size());
+  for(double& x : w)
+    x = 0.2 + 0.5 * unit(random);
+  instance.pairwise = [w, heights](std::size_t e, std::size_t a, std::size_t b) { return w[e] * std::abs(heights[a] - heights[b]); };
+  const Expansion expansion(instance.edges, instance.unary, instance.pairwise);
+  const Labels start = expansion.unary_minimum_labels();
+  const Labels result = run_and_check(instance, start);
+  const double e = energy(instance, result);
+  for(std::size_t v = 0; v < n; ++v)
+    for(std::size_t l = 0; l < labels; ++l) {
+      Labels changed = result;
+      changed[v] = l;
+      CHECK(energy(instance, changed) >= e - 1e-9 * e);
+    }
+  std::cout << "grid 30 x 30, 8 labels: energy " << energy(instance, start) << " -> " << e << std::endl;
+}
+
+// ---------------------------------------------------------------------------------------------
+// CityJSON
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Face = Mesh::Face_index;
+using Type = PPS::Building_surface_type;
+using json = nlohmann::json;
+
+// far from the origin and with more decimals than written, as georeferenced data
+const Kernel::Vector_3 offset(651234.5678901, 6861234.1234567, 35.4321);
+
+struct Building_faces
+{
+  std::size_t index;
+  std::vector<std::vector<Point>> faces;  // outward
+  std::vector<Type> types;
+  double volume;
+};
+
+// a gable roof on a 10 x 6 footprint (eaves at 4, ridge at 7 along x): 1 ground, 4 walls
+// (two of them pentagons), 2 roof faces
+Building_faces gable_building(std::size_t index)
+{
+  auto p = [](double x, double y, double z) { return Point(x, y, z) + offset; };
+  const Point g0 = p(0, 0, 0), g1 = p(10, 0, 0), g2 = p(10, 6, 0), g3 = p(0, 6, 0);
+  const Point e0 = p(0, 0, 4), e1 = p(10, 0, 4), e2 = p(10, 6, 4), e3 = p(0, 6, 4);
+  const Point r0 = p(0, 3, 7), r1 = p(10, 3, 7);
+  return {index,
+          {{g0, g3, g2, g1}, {g0, g1, e1, e0}, {g1, g2, e2, r1, e1}, {g2, g3, e3, e2}, {g3, g0, e0, r0, e3},
+           {e0, e1, r1, r0}, {e2, e3, r0, r1}},
+          {Type::GROUND, Type::WALL, Type::WALL, Type::WALL, Type::WALL, Type::ROOF, Type::ROOF},
+          10 * 6 * 4 + 10 * 6 * 3 / 2.};
+}
+
+// a box [10, 16.0007] x [0, 6] x [0, 4], touching the gable building along x = 10 (16.0007:
+// not a whole number of millimetres from the lowest corner, so that the rounding is checked)
+Building_faces box_building(std::size_t index)
+{
+  auto p = [](double x, double y, double z) { return Point(x, y, z) + offset; };
+  const double x1 = 16.0007;
+  const Point g0 = p(10, 0, 0), g1 = p(x1, 0, 0), g2 = p(x1, 6, 0), g3 = p(10, 6, 0);
+  const Point e0 = p(10, 0, 4), e1 = p(x1, 0, 4), e2 = p(x1, 6, 4), e3 = p(10, 6, 4);
+  return {index,
+          {{e0, e1, e2, e3}, {g0, g1, e1, e0}, {g1, g2, e2, e1}, {g2, g3, e3, e2}, {g3, g0, e0, e3}, {g0, g3, g2, g1}},
+          {Type::ROOF, Type::WALL, Type::WALL, Type::WALL, Type::WALL, Type::GROUND},
+          (x1 - 10) * 6 * 4};
+}
+
+// one mesh with both buildings, vertices shared within a building only
+Mesh make_mesh(const std::vector<Building_faces>& buildings, bool with_building, bool with_type)
+{
+  Mesh mesh;
+  Mesh::Property_map<Face, std::size_t> building_map;
+  Mesh::Property_map<Face, Type> type_map;
+  if(with_building) building_map = mesh.add_property_map<Face, std::size_t>("f:building", 0).first;
+  if(with_type) type_map = mesh.add_property_map<Face, Type>("f:surface_type", Type::ROOF).first;
+  for(const Building_faces& building : buildings) {
+    std::map<Point, Mesh::Vertex_index> vertex;
+    for(std::size_t i = 0; i < building.faces.size(); ++i) {
+      std::vector<Mesh::Vertex_index> face;
+      for(const Point& q : building.faces[i]) {
+        auto found = vertex.find(q);
+        if(found == vertex.end())
+          found = vertex.emplace(q, mesh.add_vertex(q)).first;
+        face.push_back(found->second);
+      }
+      const Face f = mesh.add_face(face);
+      CHECK(f != Mesh::null_face());
+      if(with_building) building_map[f] = building.index;
+      if(with_type) type_map[f] = building.types[i];
+    }
+  }
+  return mesh;
+}
+
+// checks the file against the buildings it was written from (`scale`: the expected scale)
+void check_CityJSON(const std::string& text, const std::vector<Building_faces>& buildings, double scale)
+{
+  const json j = json::parse(text);
+  CHECK(j.at("type") == "CityJSON" && j.at("version") == "1.1");
+  const json& transform = j.at("transform");
+  CHECK(transform.at("scale").size() == 3 && transform.at("translate").size() == 3);
+  std::array<double, 3> translate;
+  for(int i = 0; i < 3; ++i) {
+    CHECK(transform["scale"][i].get<double>() == scale);
+    translate[i] = transform["translate"][i].get<double>();
+  }
+  // vertices: integers, no two equal, all used, each within half a unit of an original point
+  const json& vertices = j.at("vertices");
+  std::set<std::array<long long, 3>> distinct;
+  std::vector<Point> decoded;
+  std::set<Point> originals;
+  for(const Building_faces& building : buildings)
+    for(const auto& face : building.faces)
+      originals.insert(face.begin(), face.end());
+  for(const json& v : vertices) {
+    CHECK(v.size() == 3 && v[0].is_number_integer() && v[1].is_number_integer() && v[2].is_number_integer());
+    distinct.insert({{v[0].get<long long>(), v[1].get<long long>(), v[2].get<long long>()}});
+    decoded.emplace_back(v[0].get<long long>() * scale + translate[0], v[1].get<long long>() * scale + translate[1],
+                         v[2].get<long long>() * scale + translate[2]);
+    // each coordinate within half a unit (rounding to the nearest integer)
+    double nearest = infinity;
+    for(const Point& q : originals)
+      nearest = (std::min)(nearest, (std::max)({std::abs(q.x() - decoded.back().x()), std::abs(q.y() - decoded.back().y()),
+                                                std::abs(q.z() - decoded.back().z())}));
+    CHECK(nearest <= scale / 2 + 1e-7);
+  }
+  CHECK(distinct.size() == vertices.size());
+  std::vector<bool> used(vertices.size(), false);
+
+  const json& objects = j.at("CityObjects");
+  CHECK(objects.size() == buildings.size());
+  for(const Building_faces& building : buildings) {
+    const std::string id = "building_" + std::to_string(building.index);
+    CHECK(objects.contains(id));
+    const json& object = objects[id];
+    CHECK(object.at("type") == "Building" && object.at("geometry").size() == 1);
+    const json& geometry = object["geometry"][0];
+    CHECK(geometry.at("type") == "Solid" && geometry.at("lod").is_string() && geometry["lod"] == "2.2");
+    const json& boundaries = geometry.at("boundaries");
+    CHECK(boundaries.size() == 1);  // one shell
+    const json& shell = boundaries[0];
+    CHECK(shell.size() == building.faces.size());
+    const json& semantics = geometry.at("semantics");
+    const char* type_names[] = {"RoofSurface", "WallSurface", "GroundSurface"};
+    CHECK(semantics.at("surfaces").size() == 3);
+    for(int t = 0; t < 3; ++t)
+      CHECK(semantics["surfaces"][t].at("type") == type_names[t]);
+    CHECK(semantics.at("values").size() == 1 && semantics["values"][0].size() == shell.size());
+
+    // each surface is one face of the building, with its orientation and its type
+    std::vector<std::size_t> points_of_shell;
+    std::vector<std::vector<std::size_t>> polygons;
+    std::vector<bool> matched(building.faces.size(), false);
+    for(std::size_t s = 0; s < shell.size(); ++s) {
+      CHECK(shell[s].size() == 1);  // an outer ring, no hole
+      const json& ring = shell[s][0];
+      CHECK(ring.size() >= 3);
+      std::vector<std::size_t> polygon;
+      for(const json& index : ring) {
+        CHECK(index.is_number_unsigned() && index.get<std::size_t>() < vertices.size());
+        const std::size_t i = index.get<std::size_t>();
+        CHECK(std::find(polygon.begin(), polygon.end(), i) == polygon.end());
+        polygon.push_back(i);
+        used[i] = true;
+      }
+      std::size_t matches = 0;
+      for(std::size_t f = 0; f < building.faces.size(); ++f) {
+        const auto& face = building.faces[f];
+        if(face.size() != polygon.size())
+          continue;
+        for(std::size_t shift = 0; shift < face.size(); ++shift) {
+          bool same = true;
+          for(std::size_t i = 0; i < face.size() && same; ++i)
+            same = CGAL::squared_distance(face[(i + shift) % face.size()], decoded[polygon[i]]) <= 3 * scale * scale;
+          if(same) {
+            ++matches;
+            CHECK(!matched[f]);
+            matched[f] = true;
+            CHECK(semantics["values"][0][s] == static_cast<unsigned int>(building.types[f]));
+          }
+        }
+      }
+      CHECK(matches == 1);
+      polygons.push_back(polygon);
+    }
+
+    // the shell bounds the volume of the building with outward surfaces
+    std::vector<Point> points;
+    std::map<std::size_t, std::size_t> local;
+    for(auto& polygon : polygons)
+      for(std::size_t& i : polygon) {
+        const auto inserted = local.emplace(i, points.size());
+        if(inserted.second)
+          points.push_back(decoded[i]);
+        i = inserted.first->second;
+      }
+    CHECK(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons));
+    Mesh solid;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, solid);
+    CHECK(CGAL::is_closed(solid));
+    CHECK(CGAL::Polygon_mesh_processing::triangulate_faces(solid));
+    CHECK(CGAL::Polygon_mesh_processing::is_outward_oriented(solid));
+    const double volume = CGAL::Polygon_mesh_processing::volume(solid);
+    CHECK(std::abs(volume - building.volume) <= 300 * scale);  // area 300 at most, moved by the rounding
+  }
+  CHECK(std::all_of(used.begin(), used.end(), [](bool u) { return u; }));
+}
+
+template <class Function>
+void check_throws(Function f, PPS::Input_error_code code)
+{
+  try {
+    f();
+  } catch(const PPS::Input_error& error) {
+    CHECK(error.code() == code);
+    std::cout << "  refused: " << error.what() << std::endl;
+    return;
+  }
+  CHECK(!"an Input_error was expected");
+}
+
+// a decimal comma and digit grouping, as some locales have
+struct Comma_numbers : std::numpunct<char>
+{
+  char do_decimal_point() const override { return ','; }
+  char do_thousands_sep() const override { return '.'; }
+  std::string do_grouping() const override { return "\3"; }
+};
+
+void test_CityJSON()
+{
+  const std::vector<Building_faces> buildings = {box_building(7), gable_building(3)};
+  const Mesh mesh = make_mesh(buildings, true, true);
+
+  std::ostringstream os;
+  CHECK(PPS::IO::write_CityJSON(os, mesh));
+  const std::string text = os.str();
+  check_CityJSON(text, buildings, 0.001);
+  {
+    const json j = json::parse(text);
+    // the touching buildings share four points: written once
+    CHECK(j["vertices"].size() == 10 + 8 - 4);
+    // buildings by increasing index
+    CHECK(j["CityObjects"].begin().key() == "building_3");
+  }
+  std::cout << "CityJSON: " << text.size() << " bytes" << std::endl;
+
+  // another precision
+  std::ostringstream centimetres;
+  CHECK(PPS::IO::write_CityJSON(centimetres, mesh, CGAL::parameters::stream_precision(2)));
+  check_CityJSON(centimetres.str(), buildings, 0.01);
+
+  // the output does not depend on the locale, of the stream or the global one
+  {
+    const std::locale comma(std::locale::classic(), new Comma_numbers);
+    const std::locale previous = std::locale::global(comma);
+    std::ostringstream localized;
+    localized.imbue(comma);
+    localized << 1234.5 << ' ';
+    const std::string check_locale = localized.str();
+    CHECK(check_locale == "1.234,5 ");
+    CHECK(PPS::IO::write_CityJSON(localized, mesh));
+    std::locale::global(previous);
+    CHECK(localized.str() == check_locale + text);
+  }
+
+  // the file overload writes the same text
+  const std::string file = "test_lod2_building_parts.city.json";
+  std::filesystem::remove(file);
+  CHECK(PPS::IO::write_CityJSON(file, mesh));
+  {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream content;
+    content << in.rdbuf();
+    CHECK(content.str() == text);
+  }
+  std::filesystem::remove(file);
+
+  // refused input: a typed error and nothing written, no file made
+  const Mesh without_type = make_mesh(buildings, true, false);
+  const Mesh without_building = make_mesh(buildings, false, true);
+  Mesh wrong_type = make_mesh(buildings, false, true);
+  wrong_type.add_property_map<Face, int>("f:building", 0);
+  for(const Mesh* bad : std::vector<const Mesh*>{&without_type, &without_building, &wrong_type}) {
+    std::ostringstream nothing;
+    check_throws([&] { PPS::IO::write_CityJSON(nothing, *bad); }, PPS::Input_error_code::MISSING_PROPERTY);
+    CHECK(nothing.str().empty());
+    check_throws([&] { PPS::IO::write_CityJSON(file, *bad); }, PPS::Input_error_code::MISSING_PROPERTY);
+    CHECK(!std::filesystem::exists(file));
+  }
+  {
+    std::ostringstream nothing;
+    check_throws([&] { PPS::IO::write_CityJSON(nothing, mesh, CGAL::parameters::stream_precision(0.001)); },
+                 PPS::Input_error_code::INVALID_PARAMETER);
+    check_throws([&] { PPS::IO::write_CityJSON(nothing, mesh, CGAL::parameters::stream_precision(16)); },
+                 PPS::Input_error_code::INVALID_PARAMETER);
+    Mesh not_finite = mesh;
+    not_finite.point(*not_finite.vertices().begin()) = Point(std::nan(""), 0, 0);
+    check_throws([&] { PPS::IO::write_CityJSON(nothing, not_finite); }, PPS::Input_error_code::NON_FINITE_COORDINATE);
+    CHECK(nothing.str().empty());
+  }
+
+  // a mesh without faces: a valid file without city objects
+  {
+    Mesh empty;
+    empty.add_property_map<Face, std::size_t>("f:building", 0);
+    empty.add_property_map<Face, Type>("f:surface_type", Type::ROOF);
+    std::ostringstream out;
+    CHECK(PPS::IO::write_CityJSON(out, empty));
+    const json j = json::parse(out.str());
+    CHECK(j["CityObjects"].empty() && j["vertices"].empty());
+  }
+
+  // JSON strings are escaped
+  {
+    const std::string tricky = "a\"b\\c\nd\te\x01 \xc3\xa9/";
+    std::string out;
+    PPS::internal::append_JSON_string(out, tricky);
+    CHECK(json::parse(out).get<std::string>() == tricky);
+  }
+}
+
+int main()
+{
+  test_alpha_expansion_against_brute_force();
+  test_alpha_expansion_against_CGAL();
+  test_alpha_expansion_special_cases();
+  test_alpha_expansion_on_a_grid();
+  test_CityJSON();
+  std::cout << "done" << std::endl;
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,218 @@
+// Tests of the LOD2 pipeline (lod2_building_reconstruction): synthetic buildings whose true
+// model is known, sampled as aerial LiDAR (sparse or missing walls, noise), with the planes
+// given and detected; CGAL's points_3/building.ply; properties of the model (closed, bounds a
+// volume, roofs up, walls vertical, floors down on the ground); independence of the order of
+// the points; bad input.
+
+#include "synthetic_buildings.h"
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/lod2_building_reconstruction.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace PPS = CGAL::Polygon_partition_simplification;
+namespace T = PPS::test;
+using Mesh = T::Mesh;
+
+static int failures = 0;
+#define CHECK(condition, what)                                                                      \
+  do {                                                                                               \
+    if(!(condition)) {                                                                               \
+      std::cerr << "FAILED: " << what << " (" #condition ", line " << __LINE__ << ")" << std::endl; \
+      ++failures;                                                                                    \
+    }                                                                                                \
+  } while(false)
+
+static auto sample_maps()
+{
+  return CGAL::parameters::point_map(T::Sample_point_map()).normal_map(T::Sample_normal_map());
+}
+
+// roofs face up, walls are vertical, floors face down at the ground height (z = 0 in the scenes)
+static void check_faces(const Mesh& model, double ground, const std::string& name)
+{
+  const auto type = model.property_map<Mesh::Face_index, PPS::Building_surface_type>("f:surface_type");
+  const auto plane = model.property_map<Mesh::Face_index, std::size_t>("f:plane");
+  CHECK(type.second && plane.second, name << ": the face properties exist");
+  if(!type.second || !plane.second) return;
+  std::size_t wrong = 0;
+  for(auto f : model.faces()) {
+    const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, model);
+    switch(type.first[f]) {
+    case PPS::Building_surface_type::ROOF: wrong += (n.z() > 0.1 && plane.first[f] != std::size_t(-1)) ? 0 : 1; break;
+    case PPS::Building_surface_type::WALL: wrong += std::abs(n.z()) < 1e-6 ? 0 : 1; break;
+    case PPS::Building_surface_type::GROUND: {
+      bool on_ground = n.z() < -0.999;
+      for(auto v : CGAL::vertices_around_face(model.halfedge(f), model))
+        on_ground = on_ground && std::abs(model.point(v).z() - ground) < 0.2;
+      wrong += on_ground ? 0 : 1;
+      break;
+    }
+    }
+  }
+  CHECK(wrong == 0, name << ": " << wrong << " faces of the wrong orientation for their type");
+}
+
+struct Expected
+{
+  std::size_t buildings;
+  double rms;     // both ways, bound on the RMS distance between the model and the truth
+  double maximum; // both ways, bound on the largest distance
+};
+
+static void test_scene(T::Scene_kind kind, double wall_density, bool detect, const Expected& expected)
+{
+  const T::Scene scene = T::make_scene(kind);
+  T::Sampling_options options;
+  options.wall_density_factor = wall_density;
+  const std::vector<T::Sample> samples = T::sample_scene(scene, options);
+  const std::string name = scene.name + (detect ? " (detected planes" : " (given planes") + ", walls x" +
+                           std::to_string(wall_density) + ")";
+  Mesh model;
+  const PPS::LOD2_report report =
+    detect ? CGAL::lod2_building_reconstruction(samples, model, sample_maps())
+           : CGAL::lod2_building_reconstruction(samples, model, sample_maps().plane_index_map(T::Sample_plane_index_map()));
+  const T::Two_way_distances d = T::two_way_distances(model, T::scene_mesh(scene));
+  std::cout << name << ": " << report.planes << " planes, " << report.segments << " segments, cells "
+            << report.cells_before << " -> " << report.cells_after << ", " << report.buildings << " buildings, "
+            << report.faces << " faces; truth to model RMS " << d.truth_to_model.rms << " max " << d.truth_to_model.max
+            << ", model to truth RMS " << d.model_to_truth.rms << " max " << d.model_to_truth.max << std::endl;
+  CHECK(report.closed && report.bounds_volume, name << ": every building is closed and bounds a volume");
+  CHECK(CGAL::is_closed(model) && CGAL::is_valid_polygon_mesh(model), name << ": the mesh is closed and valid");
+  CHECK(report.repaired_buildings == 0, name << ": no building needed a repair");
+  CHECK(report.buildings == expected.buildings, name << ": " << report.buildings << " buildings");
+  CHECK(report.faces == model.number_of_faces(), name << ": the report counts the faces");
+  CHECK(d.truth_to_model.rms < expected.rms && d.model_to_truth.rms < expected.rms, name << ": RMS distances");
+  CHECK(d.truth_to_model.max < expected.maximum && d.model_to_truth.max < expected.maximum, name << ": largest distances");
+  check_faces(model, 0, name);
+}
+
+// the same points in another order give the same model (same faces, same corners)
+static void test_order_independence()
+{
+  const T::Scene scene = T::make_scene(T::Scene_kind::HIP_ROOF);
+  std::vector<T::Sample> samples = T::sample_scene(scene);
+  auto corners = [](const Mesh& m) {
+    std::vector<std::array<double, 3>> result;
+    for(auto v : m.vertices()) result.push_back({{m.point(v).x(), m.point(v).y(), m.point(v).z()}});
+    std::sort(result.begin(), result.end());
+    return result;
+  };
+  Mesh first, second;
+  CGAL::lod2_building_reconstruction(samples, first, sample_maps().plane_index_map(T::Sample_plane_index_map()));
+  std::shuffle(samples.begin(), samples.end(), std::mt19937(7));
+  CGAL::lod2_building_reconstruction(samples, second, sample_maps().plane_index_map(T::Sample_plane_index_map()));
+  CHECK(first.number_of_faces() == second.number_of_faces(), "order: the same number of faces");
+  const auto a = corners(first), b = corners(second);
+  double largest = a.size() == b.size() ? 0 : std::numeric_limits<double>::infinity();
+  for(std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+    for(int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(a[i][k] - b[i][k]));
+  CHECK(largest < 1e-6, "order: the corners of the models agree (largest difference " << largest << ")");
+}
+
+// CGAL's building.ply (100k points, normals, planes in `segment_index`): one closed building
+static void test_building_ply(const std::string& file)
+{
+  CGAL::Point_set_3<T::Point_3, T::Vector_3> points;
+  if(!CGAL::IO::read_point_set(file, points)) {
+    CHECK(false, "cannot read " << file);
+    return;
+  }
+  const auto index = points.property_map<int>("segment_index");
+  CHECK(index.second, "building.ply has segment_index");
+  Mesh model;
+  const auto report = CGAL::lod2_building_reconstruction(
+    points, model, CGAL::parameters::point_map(points.point_map()).normal_map(points.normal_map()).plane_index_map(index.first));
+  std::cout << "building.ply: " << report.planes << " planes, cells " << report.cells_before << " -> "
+            << report.cells_after << ", " << report.buildings << " buildings, " << report.faces << " faces, RMS "
+            << report.rms_distance << " over " << report.measured_points << " points" << std::endl;
+  CHECK(report.closed && report.bounds_volume && report.buildings == 1, "building.ply: one closed building");
+  CHECK(report.measured_points < points.size(), "building.ply: the ground plane is found");
+  CHECK(report.rms_distance < 1.5, "building.ply: RMS distance " << report.rms_distance);
+}
+
+template <class Points, class NamedParameters>
+static void expect_error(const std::string& name, const Points& points, PPS::Input_error_code code,
+                         const NamedParameters& np)
+{
+  Mesh model;
+  const auto v = model.add_vertex(T::Point_3(1, 2, 3));
+  model.remove_vertex(v); // an empty mesh with a removed element: untouched on failure
+  bool thrown = false;
+  try {
+    CGAL::lod2_building_reconstruction(points, model, np);
+  } catch(const PPS::Input_error& e) {
+    thrown = true;
+    CHECK(e.code() == code, name << ": error code (" << e.what() << ")");
+    CHECK(std::string(e.what()).find('\n') == std::string::npos, name << ": one-line message");
+    std::cout << name << ": " << e.what() << std::endl;
+  }
+  CHECK(thrown, name << ": an Input_error is thrown");
+  CHECK(model.number_of_removed_vertices() == 1 && model.is_empty(), name << ": the mesh is unchanged");
+}
+
+static void test_bad_input()
+{
+  using P = T::Point_3;
+  const auto none = CGAL::parameters::default_values();
+  expect_error("empty", std::vector<P>{}, PPS::Input_error_code::EMPTY_INPUT, none);
+  expect_error("nan", std::vector<P>{P(0, 0, 0), P(1, 0, 0), P(0, std::nan(""), 0), P(1, 1, 1)},
+               PPS::Input_error_code::NON_FINITE_COORDINATE, none);
+  std::vector<P> vertical;
+  for(int i = 0; i < 100; ++i) vertical.emplace_back(1, 2, 0.1 * i);
+  expect_error("vertical line", vertical, PPS::Input_error_code::NO_HORIZONTAL_EXTENT, none);
+  std::vector<P> flat;
+  for(int i = 0; i < 60; ++i)
+    for(int j = 0; j < 60; ++j) flat.emplace_back(0.5 * i, 0.5 * j, 0);
+  expect_error("ground only", flat, PPS::Input_error_code::NO_PLANE, none);
+  const auto samples = T::sample_scene(T::make_scene(T::Scene_kind::GABLE_ROOF));
+  expect_error("negative regularization", samples, PPS::Input_error_code::INVALID_PARAMETER,
+               PPS::parameters::regularization_length(-1, sample_maps()));
+  expect_error("facade weight above 1", samples, PPS::Input_error_code::INVALID_PARAMETER,
+               PPS::parameters::facade_weight(2, sample_maps()));
+  Mesh not_empty;
+  not_empty.add_vertex(P(0, 0, 0));
+  bool thrown = false;
+  try {
+    CGAL::lod2_building_reconstruction(samples, not_empty, sample_maps());
+  } catch(const PPS::Input_error& e) {
+    thrown = e.code() == PPS::Input_error_code::INVALID_PARAMETER;
+  }
+  CHECK(thrown && not_empty.number_of_vertices() == 1, "a mesh that is not empty is refused and kept");
+}
+
+int main(int argc, char** argv)
+{
+  using K = T::Scene_kind;
+  for(bool detect : {false, true}) {
+    // sparse walls (a tenth of the roofs' density): the facades give the walls exactly
+    test_scene(K::GABLE_ROOF, 0.1, detect, {1, 0.02, 0.05});
+    test_scene(K::HIP_ROOF, 0.1, detect, {1, 0.02, 0.05});
+    test_scene(K::L_SHAPED_FLAT_ROOF, 0.1, detect, {1, 0.02, 0.05});
+    test_scene(K::TWO_HEIGHT_FLAT_ROOFS, 0.1, detect, {1, 0.02, 0.05});
+    // no wall point: the walls come from the outlines of the roofs' points
+    test_scene(K::GABLE_ROOF, 0, detect, {1, 0.1, 0.3});
+    test_scene(K::HIP_ROOF, 0, detect, {1, 0.2, 0.5});
+    test_scene(K::L_SHAPED_FLAT_ROOF, 0, detect, {1, 0.15, 0.5});
+  }
+  test_scene(K::SEVERAL_BUILDINGS, 0.1, false, {5, 0.05, 0.3});
+  test_order_independence();
+  test_bad_input();
+  const std::string data = argc > 1 ? argv[1] : "";
+  if(!data.empty()) test_building_ply(data + "/points_3/building.ply");
+  if(failures > 0) {
+    std::cerr << failures << " check(s) failed" << std::endl;
+    return 1;
+  }
+  std::cout << "all LOD2 reconstruction checks passed" << std::endl;
+  return 0;
+}
