@@ -3,7 +3,8 @@
 #   bash scripts/quickstart.sh run    install what is missing, build in Release, reconstruct
 #                                     kitten.xyz (closed) and b9_training.ply (open: aerial
 #                                     LiDAR), real scans from libcgal-demo, and simplify the
-#                                     kinetic partition of 25 synthetic building footprints
+#                                     kinetic partition of 25 synthetic building footprints, and
+#                                     build the LOD2 model of building.ply (a scan from libcgal-demo)
 #   bash scripts/quickstart.sh test   same set-up plus Qt5 and Xvfb, then build and run all tests
 #                                     with ctest, the headless tests of the demo plugins included
 #   bash scripts/quickstart.sh demo   same set-up, builds CGAL's Polyhedron demo with the plugins
@@ -36,7 +37,7 @@ fi
 jobs="$(nproc 2>/dev/null || echo 2)"
 if [ "$mode" = run ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-  cmake --build build -j"$jobs" --target lex_reconstruct simplify_partition
+  cmake --build build -j"$jobs" --target lex_reconstruct simplify_partition lod2_reconstruct
   mkdir -p results
   ./build/examples/Lex_optimal_chains/lex_reconstruct closed \
     build/cgal-data/data/points_3/kitten.xyz results/kitten_closed.off --json
@@ -45,9 +46,14 @@ if [ "$mode" = run ]; then
   ./build/examples/Polygon_partition_simplification/simplify_partition \
     examples/Polygon_partition_simplification/data/footprints_25.txt results/footprints_25_simplified.geojson \
     --svg results/footprints_25_simplified.svg --json
+  ./build/examples/Polygon_partition_simplification/lod2_reconstruct \
+    build/cgal-data/data/points_3/building.ply results/building_lod2.city.json --planes segment_index --json
+  ./build/examples/Polygon_partition_simplification/lod2_reconstruct \
+    build/cgal-data/data/points_3/building.ply results/building_lod2.off --planes segment_index
   echo "The reconstructed surfaces are in $(pwd)/results/: kitten_closed.off (closed surface)" \
        "and b9_training_open.off (terrain bounded by its footprint); the simplified partition of" \
-       "25 synthetic footprints: footprints_25_simplified.geojson (cells) and .svg (before/after)"
+       "25 synthetic footprints: footprints_25_simplified.geojson (cells) and .svg (before/after);" \
+       "the LOD2 model of building.ply: building_lod2.city.json (CityJSON 1.1) and building_lod2.off"
 elif [ "$mode" = demo ]; then
   cmake -S demo -B build-demo -DCMAKE_BUILD_TYPE=Release
   cmake --build build-demo -j"$jobs" --target urban_demo
