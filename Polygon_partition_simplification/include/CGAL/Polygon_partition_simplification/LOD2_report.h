@@ -32,7 +32,7 @@ struct LOD2_report
   std::size_t repaired_buildings = 0; ///< buildings whose polygons met more than two at an edge or a corner and were made manifold by CGAL's `orient_polygon_soup()` (points duplicated)
   bool closed = false;             ///< every building is a closed 2-manifold (`is_closed()`)
   bool bounds_volume = false;      ///< every building, triangulated, has no self-intersection and bounds a volume
-  std::size_t measured_points = 0; ///< input points not on the ground plane, whose distances to the model are measured
+  std::size_t measured_points = 0; ///< points on the planes other than the ground, whose distances to the model are measured
   double rms_distance = 0;         ///< root mean square distance of the measured points to the model
   double maximum_distance = 0;     ///< largest distance of a measured point to the model (one-sided Hausdorff)
   double planes_seconds = 0;         ///< plane detection and regularization

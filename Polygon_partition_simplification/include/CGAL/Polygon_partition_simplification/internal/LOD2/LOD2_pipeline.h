@@ -186,7 +186,8 @@ inline void complete_settings(LOD2_settings& s, double spacing)
     throw_input_error(Input_error_code::INVALID_PARAMETER, "height_tolerance must be at most half of minimum_building_height");
 }
 
-/// the RMS and largest distances of the points not on the ground plane to the model
+/// the RMS and largest distances to the model of the points on the planes other than the
+/// ground (the points of no plane are clutter: vegetation, cars, noise)
 template <class Kernel, class Point>
 void measure_distances(const std::vector<typename Kernel::Point_3>& points, const Building_planes_3<Kernel>& planes,
                        const CGAL::Surface_mesh<Point>& model, LOD2_report& report)
@@ -199,12 +200,13 @@ void measure_distances(const std::vector<typename Kernel::Point_3>& points, cons
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<typename CGAL::Kernel_traits<Point>::Kernel, Primitive>>;
   Tree tree(faces(triangles).first, faces(triangles).second, triangles);
   tree.accelerate_distance_queries();
-  std::vector<bool> on_ground(points.size(), false);
-  if(planes.ground < planes.planes.size())
-    for(std::size_t i : planes.planes[planes.ground].inliers) on_ground[i] = true;
+  std::vector<bool> measured(points.size(), false);
+  for(std::size_t p = 0; p < planes.planes.size(); ++p)
+    if(p != planes.ground)
+      for(std::size_t i : planes.planes[p].inliers) measured[i] = true;
   double sum = 0;
   for(std::size_t i = 0; i < points.size(); ++i) {
-    if(on_ground[i]) continue;
+    if(!measured[i]) continue;
     const Point p(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z()));
     const double squared = CGAL::to_double(tree.squared_distance(p));
     sum += squared;
@@ -266,6 +268,20 @@ std::vector<typename Kernel::Segment_2> distinct_segments(const std::vector<Buil
   return result;
 }
 
+/// the kinetic partition of the segments; unless the user sets `collinearity_distance`, the
+/// segments within `maximum_distance` of the line of a longer one are moved onto it, so that
+/// the outlines of two roofs that meet at a step (without an intersection line between them)
+/// share their edge instead of leaving a strip of ground between them
+template <class Segment_2, class NamedParameters>
+auto kinetic_partition_of_segments(const std::vector<Segment_2>& segments, double maximum_distance,
+                                   const NamedParameters& np)
+{
+  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::collinearity_distance_t>::value)
+    return CGAL::kinetic_partition_2(segments, parameters::collinearity_distance(maximum_distance, np));
+  else
+    return CGAL::kinetic_partition_2(segments, np);
+}
+
 template <class PointRange, class Point, class NamedParameters>
 LOD2_report reconstruct_lod2(const PointRange& range, CGAL::Surface_mesh<Point>& mesh, const NamedParameters& np)
 {
@@ -300,7 +316,7 @@ LOD2_report reconstruct_lod2(const PointRange& range, CGAL::Surface_mesh<Point>&
   if(segments_2.empty()) throw_input_error(Input_error_code::NO_PLANE, "no segment found between or around the planes");
   report.segments_seconds = timer.time();
   timer.reset();
-  auto partition = CGAL::kinetic_partition_2(segments_2, np);
+  auto partition = kinetic_partition_of_segments(segments_2, 2 * planes.spacing, np);
   report.cells_before = partition.number_of_cells();
   report.partition_seconds = timer.time();
   timer.reset();

@@ -200,6 +200,10 @@ Building_planes_3<Kernel> detect_building_planes(const std::vector<typename Kern
   std::nth_element(heights.begin(), heights.begin() + heights.size() / 20, heights.end());
   const double low_height = heights[heights.size() / 20];
   result.ground = find_ground<Kernel>(points, result.planes);
+  // the ground keeps its own fit: terrain slopes, and neither the regularization (which
+  // clusters it with flat roofs) nor the snapping to horizontal should tilt the floors
+  if(result.ground < result.planes.size())
+    result.planes[result.ground].plane = fit_plane<Kernel>(points, result.planes[result.ground].inliers);
   result.ground_level = low_height;
   return result;
 }
