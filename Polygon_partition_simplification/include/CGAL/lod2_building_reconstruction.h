@@ -25,9 +25,10 @@ CGAL's `points_3/building.ply`), otherwise with CGAL's region growing on the k-n
 graph (`Shape_detection`, normals estimated by `jet_estimate_normals()` when `normal_map` is not
 given). The planes are regularized by CGAL's `regularize_planes()` (parallelism, orthogonality,
 coplanarity, symmetry about the vertical), then those within 10 degrees of vertical are made
-vertical (facades) and those within 10 degrees of horizontal horizontal. The ground is the
-largest nearly horizontal plane near the lowest 5% of the points; when there is none, the
-ground is the horizontal plane at that height.
+vertical (facades) and those within 10 degrees of horizontal horizontal. The ground is, among
+the planes within 20 degrees of horizontal that hold at least 2% of the points, the one of the
+lowest median height; it keeps its own least-squares fit (terrain slopes). When there is none,
+the ground is the horizontal plane at the height of the lowest 5% of the points.
 
 \tparam PointRange a range of points of a CGAL kernel `K`
 \param points the points

@@ -32,10 +32,11 @@ template <class Kernel>
 struct Building_planes_3
 {
   std::vector<Building_plane_3<Kernel>> planes; ///< every detected plane (ground included)
-  /// index of the ground in `planes`; `planes.size()` when no plane fits the ground, which is
-  /// then the horizontal plane `ground_level`
+  /// index of the ground in `planes` (among the planes within 20 degrees of horizontal that
+  /// hold at least 2% of the points, the lowest); `planes.size()` when there is none, and the
+  /// ground is then the horizontal plane `ground_level`
   std::size_t ground = 0;
-  double ground_level = 0; ///< height of the ground when no plane fits it
+  double ground_level = 0; ///< height of the lowest 5% of the points
   double spacing = 0;      ///< average distance of a point to its six nearest neighbours
 };
 
