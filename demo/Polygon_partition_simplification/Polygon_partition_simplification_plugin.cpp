@@ -10,12 +10,17 @@
 // A partition is shown as two items: its edges (a polylines item) and its cells (a surface mesh
 // item, one colour per cell). The numbers of lines, points and cells go to the message panel.
 //
+// One action on a point set item (a point cloud of buildings and the ground, z up):
+//  - "LOD2 building model": lod2_building_reconstruction() of the package, with the planes of the
+//    int property `segment_index` when the points have it (as CGAL's building.ply), otherwise
+//    detected; the model is a surface mesh item, roofs red, walls white, floors grey.
+//
 // The plugin is also an IO plugin for the package's segments text file ("x0 y0 x1 y1" per line,
 // '#' comments, the format of simplify_partition), loaded as a polylines item at z = 0.
 //
 // Scripting (the demo's QtScript, as in the headless tests): the plugin object is the global
 // `polygon_partition_simplification_plugin`; its slots loadSegments(), kineticPartition(),
-// simplifyPartition(), lastError(), lastStatistics(), partitionStatistics() and saveSnapshot()
+// simplifyPartition(), lod2Model(), lastError(), lastStatistics(), partitionStatistics() and saveSnapshot()
 // run everything without a modal dialog: errors go to the message panel and to lastError().
 
 #include <QAction>
@@ -29,6 +34,7 @@
 #include <QMessageBox>
 #include <QPointer>
 
+#include "Scene_points_with_normal_item.h"
 #include "Scene_polylines_item.h"
 #include "Scene_surface_mesh_item.h"
 #include "SMesh_type.h"
@@ -41,6 +47,7 @@
 
 #include <CGAL/Polygon_partition_simplification/IO/segments_file.h>
 #include <CGAL/kinetic_partition_2.h>
+#include <CGAL/lod2_building_reconstruction.h>
 #include <CGAL/simplify_polygon_partition_2.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -67,9 +74,9 @@
 namespace PPS = CGAL::Polygon_partition_simplification;
 // The kernel of the demo's items (EPICK) is that of simplify_partition: the same doubles give
 // the same partitions.
-using Kernel = EPICK;
-using Partition = PPS::Line_partition_2<Kernel>;
-using Segment_2 = Kernel::Segment_2;
+using Partition_kernel = EPICK;
+using Partition = PPS::Line_partition_2<Partition_kernel>;
+using Segment_2 = Partition_kernel::Segment_2;
 
 namespace {
 
@@ -91,8 +98,8 @@ std::vector<Segment_2> segments_of(const Scene_polylines_item& item)
   std::vector<Segment_2> segments;
   for(const auto& polyline : item.polylines)
     for(std::size_t i = 1; i < polyline.size(); ++i)
-      segments.emplace_back(Kernel::Point_2(polyline[i - 1].x(), polyline[i - 1].y()),
-                            Kernel::Point_2(polyline[i].x(), polyline[i].y()));
+      segments.emplace_back(Partition_kernel::Point_2(polyline[i - 1].x(), polyline[i - 1].y()),
+                            Partition_kernel::Point_2(polyline[i].x(), polyline[i].y()));
   return segments;
 }
 
@@ -102,8 +109,8 @@ Scene_polylines_item* polylines_item_of(const SegmentRange& segments)
 {
   Scene_polylines_item* item = new Scene_polylines_item;
   for(const Segment_2& s : segments)
-    item->polylines.push_back({Kernel::Point_3(s.source().x(), s.source().y(), 0),
-                               Kernel::Point_3(s.target().x(), s.target().y(), 0)});
+    item->polylines.push_back({Partition_kernel::Point_3(s.source().x(), s.source().y(), 0),
+                               Partition_kernel::Point_3(s.target().x(), s.target().y(), 0)});
   return item;
 }
 
@@ -123,9 +130,9 @@ struct Face_nesting
   int level = -1;
 };
 using CDT_face_base = CGAL::Constrained_triangulation_face_base_2<
-  Kernel, CGAL::Triangulation_face_base_with_info_2<Face_nesting, Kernel>>;
+  Partition_kernel, CGAL::Triangulation_face_base_with_info_2<Face_nesting, Partition_kernel>>;
 using CDT = CGAL::Constrained_Delaunay_triangulation_2<
-  Kernel, CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<Kernel>, CDT_face_base>,
+  Partition_kernel, CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<Partition_kernel>, CDT_face_base>,
   CGAL::Exact_predicates_tag>;
 
 void mark_nesting_levels(CDT& cdt)
@@ -160,7 +167,7 @@ void add_cell(const Partition::Polygon_with_holes_2& cell, double z, const CGAL:
   std::map<CDT::Vertex_handle, SMesh::Vertex_index> vertex_of;
   auto vertex = [&](CDT::Vertex_handle v) {
     auto [it, inserted] = vertex_of.emplace(v, SMesh::Vertex_index());
-    if(inserted) it->second = mesh.add_vertex(Kernel::Point_3(v->point().x(), v->point().y(), z));
+    if(inserted) it->second = mesh.add_vertex(Partition_kernel::Point_3(v->point().x(), v->point().y(), z));
     return it->second;
   };
   for(const CDT::Face_handle f : cdt.finite_face_handles()) {
@@ -277,17 +284,24 @@ public:
     actionSimplify = new QAction(tr("Simplify partition"), mw);
     actionSimplify->setObjectName("actionSimplifyPartition");
     actionSimplify->setProperty("subMenuName", "Operations on Polylines/Polygon Partition");
+    actionLod2 = new QAction(tr("LOD2 building model"), mw);
+    actionLod2->setObjectName("actionLod2BuildingModel");
+    actionLod2->setProperty("subMenuName", "Point Set Processing/Building Reconstruction");
     autoConnectActions();
   }
 
   bool applicable(QAction* action) const override
   {
     CGAL::Three::Scene_item* item = scene->item(scene->mainSelectionIndex());
+    if(action == actionLod2) return qobject_cast<Scene_points_with_normal_item*>(item) != nullptr;
     if(action == actionSimplify && partitions.count(item) > 0) return true; // its cells item too
     return qobject_cast<Scene_polylines_item*>(item) != nullptr;
   }
 
-  QList<QAction*> actions() const override { return QList<QAction*>() << actionKinetic << actionSimplify; }
+  QList<QAction*> actions() const override
+  {
+    return QList<QAction*>() << actionKinetic << actionSimplify << actionLod2;
+  }
 
   // IO: the segments text file of the package (the extension of its data, .txt; the files of
   // the demo's other .txt formats are left to their plugins).
@@ -301,6 +315,7 @@ public:
 public Q_SLOTS:
   void on_actionKineticPartition_triggered() { kinetic(scene->mainSelectionIndex(), true); }
   void on_actionSimplifyPartition_triggered();
+  void on_actionLod2BuildingModel_triggered() { lod2(scene->mainSelectionIndex(), true); }
 
   // Scripting: each returns the index of the new item (the edges of a partition), or -1 with the
   // reason in lastError().
@@ -312,6 +327,9 @@ public Q_SLOTS:
   {
     return simplify(item, Simplify_parameters{lambda1, lambda2, epsilon, maximum_angle}, false);
   }
+
+  // the LOD2 model of a point set item (the surface mesh item), as lod2_reconstruct computes it
+  int lod2Model(int item) { return lod2(item, false); }
 
   // the reason why the last call made no item ("" after a success)
   QString lastError() const { return last_error; }
@@ -335,12 +353,14 @@ private:
   Scene_polylines_item* read_item(const QFileInfo& fileinfo);
   int kinetic(Item_id id, bool interactive);
   int simplify(Item_id id, const Simplify_parameters& p, bool interactive);
+  int lod2(Item_id id, bool interactive);
   Item_id add_partition(const Partition& partition, std::size_t segments, const QString& name, Item_id& cells_id);
   void hide_source(Item_id id);
   int fail(const QString& reason, bool interactive);
 
   QAction* actionKinetic = nullptr;
   QAction* actionSimplify = nullptr;
+  QAction* actionLod2 = nullptr;
   // by edges item and by cells item; an entry goes when its item is deleted
   std::map<const CGAL::Three::Scene_item*, std::shared_ptr<Record>> partitions;
   QString last_error, last_statistics;
@@ -376,7 +396,7 @@ Scene_polylines_item* Plugin::read_item(const QFileInfo& fileinfo)
 {
   std::vector<Segment_2> segments;
   try {
-    segments = PPS::IO::read_segments_2<Kernel>(fileinfo.filePath().toStdString());
+    segments = PPS::IO::read_segments_2<Partition_kernel>(fileinfo.filePath().toStdString());
   } catch(const std::exception& e) {
     last_error = QString::fromStdString(e.what());
     return nullptr;
@@ -610,3 +630,60 @@ bool Plugin::saveSnapshot(const QString& file)
 }
 
 #include "Polygon_partition_simplification_plugin.moc"
+
+// The LOD2 model of the points of a point set item: a new surface mesh item, its faces
+// coloured by type; the statistics of lod2_reconstruct --json in lastStatistics().
+int Plugin::lod2(Item_id id, bool interactive)
+{
+  const auto* points_item = qobject_cast<Scene_points_with_normal_item*>(scene->item(id));
+  if(points_item == nullptr) return fail(tr("LOD2 building model: select a point set item"), interactive);
+  const Point_set& points = *points_item->point_set();
+  SMesh model;
+  PPS::LOD2_report report;
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  try {
+    auto np = CGAL::parameters::point_map(points.point_map());
+    const auto plane_index = points.property_map<int>("segment_index");
+    if(points.has_normal_map() && plane_index.second)
+      report = CGAL::lod2_building_reconstruction(points, model, np.normal_map(points.normal_map()).plane_index_map(plane_index.first));
+    else if(points.has_normal_map())
+      report = CGAL::lod2_building_reconstruction(points, model, np.normal_map(points.normal_map()));
+    else if(plane_index.second)
+      report = CGAL::lod2_building_reconstruction(points, model, np.plane_index_map(plane_index.first));
+    else
+      report = CGAL::lod2_building_reconstruction(points, model, np);
+  } catch(const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    return fail(QString::fromStdString(e.what()), interactive);
+  }
+  QApplication::restoreOverrideCursor();
+  const auto type = model.property_map<SMesh::Face_index, PPS::Building_surface_type>("f:surface_type").first;
+  auto color = model.add_property_map<SMesh::Face_index, CGAL::IO::Color>("f:color").first;
+  for(auto f : model.faces())
+    color[f] = type[f] == PPS::Building_surface_type::ROOF   ? CGAL::IO::Color(200, 60, 50)
+               : type[f] == PPS::Building_surface_type::WALL ? CGAL::IO::Color(235, 235, 225)
+                                                             : CGAL::IO::Color(120, 120, 120);
+  QJsonObject statistics;
+  statistics["points"] = qint64(report.points);
+  statistics["planes"] = qint64(report.planes);
+  statistics["segments"] = qint64(report.segments);
+  statistics["cells_before"] = qint64(report.cells_before);
+  statistics["cells_after"] = qint64(report.cells_after);
+  statistics["buildings"] = qint64(report.buildings);
+  statistics["faces"] = qint64(report.faces);
+  statistics["closed"] = report.closed;
+  statistics["bounds_volume"] = report.bounds_volume;
+  statistics["total_s"] = report.seconds;
+  Scene_surface_mesh_item* item = new Scene_surface_mesh_item(model);
+  item->setName(tr("%1 (LOD2)").arg(points_item->name()));
+  item->invalidateOpenGLBuffers();
+  const Item_id result = scene->addItem(item);
+  statistics["item"] = result;
+  last_statistics = QString::fromUtf8(QJsonDocument(statistics).toJson(QJsonDocument::Compact));
+  last_error.clear();
+  CGAL::Three::Three::information(tr("LOD2 building model: %1 building(s), %2 faces, %3, cells %4 -> %5, %6 s")
+                                    .arg(report.buildings).arg(report.faces)
+                                    .arg(report.closed ? tr("closed") : tr("NOT closed"))
+                                    .arg(report.cells_before).arg(report.cells_after).arg(report.seconds));
+  return result;
+}

@@ -1,0 +1,52 @@
+# Runs the demo on CGAL's building.ply with test/lod2_building.js and compares the LOD2 model of
+# the plugin with that of lod2_reconstruct on the same points.
+#   cmake -DDEMO=<Polyhedron_3> -DLOD2_RECONSTRUCT=<lod2_reconstruct> -DSCRIPT=<.js> -DDATA=<points_3 dir>
+#         -DSEGMENTS=<a segments file> -DOUT=<output dir> [-DTIMEOUT=<s>] -P run_lod2_demo_test.cmake
+cmake_minimum_required(VERSION 3.19) # string(JSON)
+foreach(var DEMO LOD2_RECONSTRUCT SCRIPT DATA SEGMENTS OUT)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_lod2_demo_test.cmake: -D${var}=... is missing")
+  endif()
+endforeach()
+if(NOT DEFINED TIMEOUT)
+  set(TIMEOUT 300)
+endif()
+if(NOT EXISTS "${DATA}/building.ply")
+  message(FATAL_ERROR "${DATA}/building.ply not found (CGAL's data: /usr/share/doc/libcgal-dev/data.tar.gz)")
+endif()
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+include("${CMAKE_CURRENT_LIST_DIR}/demo_test_functions.cmake")
+
+execute_process(COMMAND "${LOD2_RECONSTRUCT}" "${DATA}/building.ply" "${OUT}/building_cli.off" --planes segment_index --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE expected ERROR_VARIABLE err TIMEOUT ${TIMEOUT})
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "lod2_reconstruct failed (${rc}): ${err}")
+endif()
+
+run_demo(result "${CMAKE_CURRENT_LIST_DIR}/common.js" "${CMAKE_CURRENT_LIST_DIR}/partition_common.js"
+         "javascript:var SEGMENTS = '${SEGMENTS}';" "${SCRIPT}")
+
+foreach(key planes segments cells_before cells_after buildings faces closed)
+  string(JSON want GET "${expected}" ${key})
+  string(JSON got GET "${result}" lod2 ${key})
+  if(NOT "${want}" STREQUAL "${got}")
+    message(FATAL_ERROR "${key}: the demo gives ${got}, lod2_reconstruct ${want}")
+  endif()
+endforeach()
+string(JSON faces GET "${result}" mesh faces)
+string(JSON want_faces GET "${expected}" faces)
+if(NOT faces EQUAL want_faces)
+  message(FATAL_ERROR "the model item has ${faces} faces, lod2_reconstruct ${want_faces}")
+endif()
+string(JSON refused_item GET "${result}" refused item)
+string(JSON before GET "${result}" refused entries_before)
+string(JSON after GET "${result}" refused entries_after)
+string(JSON reason GET "${result}" refused error)
+if(NOT refused_item EQUAL -1 OR NOT before EQUAL after OR reason STREQUAL "")
+  message(FATAL_ERROR "a polylines item must be refused with a reason: ${result}")
+endif()
+if(NOT EXISTS "${OUT}/building_lod2.png")
+  message(FATAL_ERROR "no snapshot")
+endif()
+message(STATUS "the demo's LOD2 model equals lod2_reconstruct's: ${expected}")
