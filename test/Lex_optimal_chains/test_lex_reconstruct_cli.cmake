@@ -2,28 +2,12 @@
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 
+include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/Urban_cli_test_functions.cmake")
+
 # expect_failure(name subcommand input [options...]): exit code 1, one line, no output
-function(expect_failure name subcommand input)
-  set(out "${WORK}/${name}.off")
-  execute_process(COMMAND "${PROGRAM}" ${subcommand} "${input}" "${out}" ${ARGN} RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
-  if(rc EQUAL 0)
-    message(FATAL_ERROR "${name}: expected a failure, got exit code 0")
-  endif()
-  if(EXISTS "${out}")
-    message(FATAL_ERROR "${name}: an output file was left behind")
-  endif()
-  file(GLOB partial "${WORK}/.*partial*")
-  if(partial)
-    message(FATAL_ERROR "${name}: a partial file was left behind: ${partial}")
-  endif()
-  string(STRIP "${err}" err)
-  string(FIND "${err}" "\n" newline)
-  if(NOT newline EQUAL -1 OR NOT err MATCHES "^lex_reconstruct: error: ")
-    message(FATAL_ERROR "${name}: the reason is not one line: '${err}'")
-  endif()
-  message(STATUS "${name}: ${err}")
-  set(last_error "${err}" PARENT_SCOPE)
-endfunction()
+macro(expect_failure name subcommand input)
+  expect_cli_failure(${name} "${WORK}/${name}.off" "${PROGRAM}" ${subcommand} "${input}" "${WORK}/${name}.off" ${ARGN})
+endmacro()
 
 # expect_failure_because(name reason subcommand input [options...]): as expect_failure, with a
 # reason that matches the regular expression `reason`

@@ -317,7 +317,8 @@ inline Mesh mesh_of(const std::vector<std::vector<Point_3>>& polygons)
 } // namespace internal
 
 /// A scene of the given kind, its plane indices assigned and its ground 8 m wider than the
-/// buildings on every side. Buildings 10 to 24 m wide, 5 to 14 m tall, slopes 30 to 45 degrees.
+/// buildings on every side. Footprints 8 x 10 to 24 x 20 m, buildings 8 to 12 m tall (eaves 4 to
+/// 7 m, an annex 5 m), roof slopes 30 to 45 degrees, rotated 0.1 to 1.2 radians.
 inline Scene make_scene(Scene_kind kind)
 {
   using namespace internal;
