@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -62,10 +63,11 @@ public:
     for(std::size_t b = 0; b < number_of_buildings_; ++b) buildings_.emplace_back();
     for(auto f = regions_.faces_begin(); f != regions_.faces_end(); ++f)
       if(label_of(f) != Height_functions::ground_label) extrude_region(f);
+    std::set<Halfedge> walked; // the footprint halfedges already in a ring
     for(auto h = regions_.halfedges_begin(); h != regions_.halfedges_end(); ++h)
       if(building_of(h->face()) != none && label_of(h->twin()->face()) == Height_functions::ground_label &&
-         footprint_ring_start(h))
-        add_floor_ring(h);
+         point_index_.count(h->source()->point()) > 0 && walked.count(h) == 0)
+        add_floor_ring(h, walked);
     for(std::size_t b = 0; b < number_of_buildings_; ++b) add_floor(b);
   }
 
@@ -315,19 +317,7 @@ private:
 
   // ---- floors ----------------------------------------------------------------------------------
   // the footprint boundary: halfedges with the building on the left and the ground on the
-  // right; a ring is walked from its halfedge whose source is the smallest kept point
-  bool footprint_ring_start(Halfedge h) const
-  {
-    if(point_index_.find(h->source()->point()) == point_index_.end()) return false;
-    const std::size_t start = kept_index(h->source());
-    Halfedge g = next_on_footprint(h);
-    while(g != h) {
-      if(point_index_.find(g->source()->point()) != point_index_.end() && kept_index(g->source()) < start) return false;
-      g = next_on_footprint(g);
-    }
-    return true;
-  }
-
+  // right; around a point, the next one is found by turning inside the building
   Halfedge next_on_footprint(Halfedge h) const
   {
     const std::size_t building = building_of(h->face());
@@ -336,7 +326,7 @@ private:
     return next;
   }
 
-  void add_floor_ring(Halfedge first)
+  void add_floor_ring(Halfedge first, std::set<Halfedge>& walked)
   {
     const std::size_t building = building_of(first->face());
     std::vector<Ring_corner> ring;
@@ -347,6 +337,7 @@ private:
         const auto& p = h->source()->point();
         ring.push_back({soup_point(building, a, corner(a, Height_functions::ground_label)), p.x(), p.y()});
       }
+      walked.insert(h);
       h = next_on_footprint(h);
     } while(h != first);
     floor_rings_[building].push_back(std::move(ring));
