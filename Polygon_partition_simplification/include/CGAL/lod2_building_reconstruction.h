@@ -33,7 +33,7 @@ the ground is the horizontal plane at the height of the lowest 5% of the points.
 \tparam PointRange a range of points of a CGAL kernel `K`
 \param points the points
 \param np named parameters among `point_map`, `normal_map`, `plane_index_map`,
-`maximum_distance`, `maximum_angle`, `minimum_region_size` (see
+`maximum_distance`, `maximum_normal_deviation`, `minimum_region_size` (see
 `lod2_building_reconstruction()`)
 \throws Polygon_partition_simplification::Input_error on an empty or non-finite input
 */
@@ -126,8 +126,9 @@ in the planes of `detect_building_planes_3()`, `std::size_t(-1)` for walls and f
                           the points that bound an intersection segment to its line}
     \cgalParamDefault{3 times the average spacing (distance to the 6 nearest neighbours)}
   \cgalParamNEnd
-  \cgalParamNBegin{maximum_angle}
-    \cgalParamDescription{largest angle in degrees between a point's normal and its plane}
+  \cgalParamNBegin{maximum_normal_deviation}
+    \cgalParamDescription{largest angle in degrees between a point's normal and its plane's
+                          (`maximum_angle` is the simplification's \f$\alpha_{max}\f$)}
     \cgalParamDefault{20}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_region_size}

@@ -106,7 +106,7 @@ struct LOD2_input
     read_optional_maps(range, np);
     sort_points();
     settings.planes.maximum_distance = choose_parameter(get_parameter(np, pps_np::maximum_distance), 0.);
-    settings.planes.maximum_angle = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_angle), 20.);
+    settings.planes.maximum_angle = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_normal_deviation), 20.);
     settings.planes.minimum_region_size = choose_parameter(get_parameter(np, pps_np::minimum_region_size), std::size_t(0));
     settings.lift.height_threshold = choose_parameter(get_parameter(np, pps_np::height_threshold), 0.);
     settings.lift.regularization_length = choose_parameter(get_parameter(np, pps_np::regularization_length), 0.);
@@ -163,7 +163,7 @@ private:
       if(!ok) throw_input_error(Input_error_code::INVALID_PARAMETER, message);
     };
     check(s.planes.maximum_distance >= 0 && std::isfinite(s.planes.maximum_distance), "maximum_distance must be >= 0");
-    check(s.planes.maximum_angle > 0 && s.planes.maximum_angle < 90, "maximum_angle must be in (0, 90) degrees");
+    check(s.planes.maximum_angle > 0 && s.planes.maximum_angle < 90, "maximum_normal_deviation must be in (0, 90) degrees");
     check(s.lift.height_threshold >= 0 && std::isfinite(s.lift.height_threshold), "height_threshold must be >= 0");
     check(s.lift.regularization_length >= 0 && std::isfinite(s.lift.regularization_length),
           "regularization_length must be >= 0");
