@@ -23,8 +23,9 @@ detects the planes of a building scene (first stage of the LOD2 pipeline, sectio
 thesis): from `plane_index_map` when it is given (for instance the `segment_index` property of
 CGAL's `points_3/building.ply`), otherwise with CGAL's region growing on the k-nearest-neighbour
 graph (`Shape_detection`, normals estimated by `jet_estimate_normals()` when `normal_map` is not
-given). The planes are regularized by CGAL's `regularize_planes()` (parallelism, orthogonality,
-coplanarity, symmetry about the vertical), then those within 10 degrees of vertical are made
+given). The planes are regularized by CGAL's `regularize_planes()` (parallelism, orthogonality and
+coplanarity within 5 degrees; not its symmetry about the vertical, which tilts flat roofs and the
+ground toward the slopes of pitched roofs), then those within 10 degrees of vertical are made
 vertical (facades) and those within 10 degrees of horizontal horizontal. The ground is, among
 the planes within 20 degrees of horizontal that hold at least 2% of the points, the one of the
 lowest median height; it keeps its own least-squares fit (terrain slopes). When there is none,

@@ -159,7 +159,8 @@ std::size_t find_ground(const std::vector<typename Kernel::Point_3>& points,
 
 /// the planes of a building scene (section 3.2.1): from `plane_index` when it is not empty,
 /// otherwise by region growing; regularized with CGAL's `regularize_planes` (parallelism,
-/// orthogonality, coplanarity, symmetry about the vertical), then nearly vertical planes made
+/// orthogonality, coplanarity; its symmetry about the vertical is off: it clustered flat roofs
+/// and the ground with pitched roofs), then nearly vertical planes made
 /// vertical and nearly horizontal ones horizontal; the ground identified.
 template <class Kernel>
 Building_planes_3<Kernel> detect_building_planes(const std::vector<typename Kernel::Point_3>& points,
