@@ -235,6 +235,7 @@ QJsonObject simplification_json(std::size_t segments, const PPS::Simplification_
   j["point_merges"] = qint64(s.point_merges);
   j["removed_points"] = qint64(s.removed_points);
   j["far_points"] = qint64(s.far_points);
+  j["far_point_removals"] = qint64(s.far_point_removals);
   j["rejected_rounds"] = qint64(s.rejected_rounds);
   return j;
 }

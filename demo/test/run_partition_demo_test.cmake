@@ -56,7 +56,7 @@ endfunction()
 # the statistics of a simplification: every number of simplify_partition --json but the timings
 set(simplification_keys segments lines_before lines_after points_before points_after cells_before cells_after
     orthogonal_pairs_before orthogonal_pairs_after iterations rounds line_merges point_merges removed_points
-    far_points rejected_rounds)
+    far_points far_point_removals rejected_rounds)
 function(check_simplification demo_json cli_json)
   foreach(key ${simplification_keys})
     string(JSON value GET "${cli_json}" ${key})

@@ -67,7 +67,7 @@ int main(int argc, char** argv)
   std::string input, output, svg;
   double lambda1 = 0.5, lambda2 = 5, alpha_max = 5;
   double epsilon = 0;
-  bool json = false;
+  bool json = false, remove_far_points = false;
   app.add_option("SEGMENTS", input, "segments, one per line: x0 y0 x1 y1")->required();
   app.add_option("OUTPUT", output, "cells of the simplified partition (.geojson, .json or .wkt)")->required();
   app.add_option("--lambda1", lambda1, "weight of the concurrency term (edge collapses), default 0.5");
@@ -75,6 +75,8 @@ int main(int argc, char** argv)
   app.add_option("--epsilon", epsilon, "longest edge to collapse, input units, also the unit of length of the energy (default: 1% of the half-diagonal)");
   app.add_option("--alpha-max", alpha_max, "angle to 90 degrees under which lines are pulled to orthogonality");
   app.add_option("--svg", svg, "draws the partition before and after, side by side");
+  app.add_flag("--remove-far-points", remove_far_points,
+               "case (b2) of the thesis: remove the points sent outside the partition with their edges");
   app.add_flag("--json", json, "prints one JSON line of statistics");
   try {
     app.parse(argc, argv);
@@ -101,10 +103,11 @@ int main(int argc, char** argv)
     const Partition before = partition;
     const double scale = partition.frame().scale;
     const auto stats = CGAL::simplify_polygon_partition_2(
-      partition, PPS::parameters::concurrency_weight(lambda1,
+      partition, PPS::parameters::remove_far_points(remove_far_points,
+                 PPS::parameters::concurrency_weight(lambda1,
                  PPS::parameters::orthogonality_weight(lambda2,
                  PPS::parameters::collapse_distance(app.count("--epsilon") > 0 ? epsilon : 0.01 * scale,
-                 PPS::parameters::maximum_angle(alpha_max)))));
+                 PPS::parameters::maximum_angle(alpha_max))))));
 
     std::vector<Partition::Polygon_with_holes_2> cells;
     partition.cells(std::back_inserter(cells));
@@ -148,6 +151,7 @@ int main(int argc, char** argv)
       j["point_merges"] = stats.point_merges;
       j["removed_points"] = stats.removed_points;
       j["far_points"] = stats.far_points;
+      j["far_point_removals"] = stats.far_point_removals;
       j["rejected_rounds"] = stats.rejected_rounds;
       j["kinetic_s"] = std::chrono::duration<double>(t1 - t0).count();
       j["simplification_s"] = stats.seconds;

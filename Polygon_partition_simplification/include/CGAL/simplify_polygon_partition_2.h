@@ -44,7 +44,8 @@ struct Simplification_statistics
   std::size_t line_merges = 0;    ///< reductions (a): two lines merged
   std::size_t point_merges = 0;   ///< reductions (b1): two points merged (an edge collapsed)
   std::size_t removed_points = 0; ///< points left on a single line, or dangling, removed
-  std::size_t far_points = 0;     ///< triplets below the threshold with a point outside the disk (b2)
+  std::size_t far_point_removals = 0; ///< reductions (b2) with `remove_far_points`: points outside the disk of the partition removed with their edges
+  std::size_t far_points = 0;     ///< points outside the disk left in place (the validity check then decides whether the round is redone)
   std::size_t rejected_rounds = 0; ///< reductions redone because they left the partition invalid (with some lines put back)
   double energy_before = 0;       ///< energy of the input partition (in units of the collapse distance)
   double energy_after = 0;        ///< energy of the result (in units of the collapse distance)
@@ -157,6 +158,16 @@ predicates decide the validity of every round
     \cgalParamType{`double`}
     \cgalParamDefault{\f$\min(10^{-9}, \alpha_0 / 2)\f$ (\f$10^{-9}\f$ but for weights above about \f$10^6\f$)}
   \cgalParamNEnd
+  \cgalParamNBegin{remove_far_points}
+    \cgalParamDescription{case (b2) as in the thesis: a point that the descent sent outside the disk of
+                          the partition is removed with its edges (the cells around it become one),
+                          unless it is a corner of only two edges. Off, such a point stays and the
+                          reductions of the round are redone with its lines kept back. Removal
+                          simplifies more, with fewer redone rounds, but moves boundaries farther
+                          from the input (see the manual)}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{largest total number of gradient steps}
     \cgalParamType{`std::size_t`}
@@ -232,6 +243,7 @@ simplify_polygon_partition_2(Polygon_partition_simplification::Line_partition_2<
     stats.point_merges += round.counts.point_merges;
     stats.removed_points += round.counts.removed_points;
     stats.far_points += round.counts.far_points;
+    stats.far_point_removals += round.counts.far_removals;
     if(callback) { // the statistics so far, the `_after` fields describing the partition passed
       const Partition current = PPS::internal::line_partition<GeomTraits>(w, partition.frame(), partition.geom_traits());
       describe_result(current);

@@ -35,6 +35,7 @@ enum regularization_length_t { regularization_length };
 enum facade_weight_t { facade_weight };
 enum minimum_building_height_t { minimum_building_height };
 enum height_tolerance_t { height_tolerance };
+enum remove_far_points_t { remove_far_points };
 
 } // namespace internal_np
 
@@ -97,6 +98,8 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(facade_weight)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(minimum_building_height)
 /// roof heights closer than this at a point of the partition are made equal (no wall between them)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(height_tolerance)
+/// case (b2) of the thesis: remove a point sent outside the disk of the partition with its edges
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(remove_far_points)
 
 #undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER
 

@@ -17,12 +17,16 @@
 //    eta = d_P d_L^2 / (5 (1 + R^2))), see 2.
 // 2. A point sent to infinity: if its two most parallel lines are closer than epsilon
 //    everywhere in the disk, the step between them is an edge shorter than epsilon that
-//    collapsed, and they merge (a); otherwise nothing is done here (counted in far_points):
-//    the exact validity check of the caller sees the partition invalid and redoes the round.
-// 3. Restore the invariant (two lines share at most one point, two points at most one line):
-//    two points sharing two lines merge their lines if these are closer than d_L, or merge if
-//    they are closer than epsilon; two distant points on the same two lines are a conflict,
-//    reported to the caller (which redoes the round with their lines kept still).
+//    collapsed, and they merge (a); otherwise the point is removed with its edges (b2): the
+//    cells around it become one, the lines left without an edge at the other end of each of
+//    its edges leave that point (which disappears if one line is left). A corner of only two
+//    edges, or a point whose lines are all kept back, stays (counted in far_points): the exact
+//    validity check of the caller then redoes the round.
+// 3. Restore the invariant (two lines share at most one point, two points at most one line)
+//    with the thesis's faulty pairs: two points sharing two lines merge their lines if these
+//    are closer than d_L, or merge if they are closer than epsilon or if all their lines pass
+//    within d_P of one point; other pairs (two distant points on the same two lines) are a
+//    conflict, reported to the caller (which redoes the round with their lines kept still).
 // After merges the edges of every line are rebuilt from the union of the intervals they
 // covered (merged lines overlap), points left on a single line disappear inside their chain,
 // and dangling edges are removed. Merged lines get M_f = M_i + M_j and the line minimizing it.
@@ -50,7 +54,8 @@ struct Reduction_counts
   std::size_t line_merges = 0;
   std::size_t point_merges = 0;
   std::size_t removed_points = 0;  // points left on one line, or dangling
-  std::size_t far_points = 0;      // case (b2) without a merge: left to the validity check
+  std::size_t far_points = 0;      // case (b2) left as is (its lines kept back): left to the validity check
+  std::size_t far_removals = 0;    // case (b2): points outside the disk removed with their edges
   std::size_t total() const { return line_merges + point_merges + removed_points; }
 };
 
@@ -60,6 +65,7 @@ struct Reduction_thresholds
   double point_distance = 0; // d_P
   double line_distance = 0;  // d_L
   double collapse_length = 0; // epsilon: a reversed edge shorter than this collapses
+  bool remove_far_points = false; // (b2) as in the thesis: a point outside the disk is removed
 };
 
 class Partition_reducer
@@ -79,6 +85,8 @@ public:
   {
     reset();
     const std::size_t nv = w_.vertex_lines.size();
+    degree_.assign(nv, 0);
+    for(const auto& e : w_.edges) { ++degree_[e[1]]; ++degree_[e[2]]; }
     std::vector<std::array<double, 2>> points(nv);
     for(Index v = 0; v < nv; ++v) points[v] = w_.point(v);
     auto line = [&](Index l) -> const Vector_3d& { return w_.lines[l].coefficients; };
@@ -115,9 +123,10 @@ public:
             if(merge_close_points(u, v, points, t_.point_distance)) ++counts_.point_merges;
             continue;
           }
-          // (b2): a point outside the disk of radius R = 1
+          // (b2): a point outside the disk of radius R = 1 (the corners of the enclosing
+          // rectangle are on its circle: rounding must not send them out)
           for(Index x : {u, v})
-            if(points[x][0] * points[x][0] + points[x][1] * points[x][1] > 1.) send_to_infinity(x);
+            if(points[x][0] * points[x][0] + points[x][1] * points[x][1] > 1. + 1e-9) send_to_infinity(x);
         }
       }
     }
@@ -151,8 +160,16 @@ public:
               changed = true;
               continue;
             }
-            // two distant points on the same two lines: no merge makes sense; the caller redoes
-            // the round with these lines kept still
+            // two distant points on the same two lines whose lines all pass within d_P of one
+            // point: they are that point
+            if(lines_meet_near_one_point(first, v)) {
+              if(unite_vertices(first, v)) ++counts_.point_merges;
+              changed = true;
+              continue;
+            }
+            // otherwise no merge is faithful (merging them anyway, as the thesis does, moved a
+            // wall of the synthetic footprints by 4 m): the caller redoes the round with these
+            // lines kept still
             for(Index y : {first, v})
               for(Index x : w_.vertex_lines[y])
                 conflicts_.insert(conflicts_.end(), w_.lines[x].members.begin(), w_.lines[x].members.end());
@@ -191,7 +208,34 @@ private:
         return;
       }
     }
-    ++counts_.far_points; // left as is: the validity check of the caller decides
+    if(std::all_of(l.begin(), l.end(), [&](Index m) { return w_.lines[m].is_still(); })) {
+      ++counts_.far_points; // kept back: left as is, the validity check of the caller decides
+      return;
+    }
+    // A point with two edges is a corner that only two cells share: without it their common
+    // boundary would open, the cells would become one, and the dangling chains left would go
+    // too (a polygon given alone would lose its cell). It stays, for the validity check.
+    if(!t_.remove_far_points || degree_[x] < 3) { ++counts_.far_points; return; }
+    if(!removed_[x]) { removed_[x] = true; ++counts_.far_removals; }
+  }
+
+  // Do the lines of points u and v all pass within d_P of one point (their least-squares
+  // point)? Then u and v are one point up to d_P, as the merge of lines made them.
+  bool lines_meet_near_one_point(Index u, Index v) const
+  {
+    Point_lines all(w_.vertex_lines[u].begin(), w_.vertex_lines[u].end());
+    all.insert(all.end(), w_.vertex_lines[v].begin(), w_.vertex_lines[v].end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    const auto p = point_of_lines(
+      all, [this](std::size_t l) -> const Vector_3d& { return w_.lines[l].coefficients; },
+      [this](std::size_t l) { return w_.lines[l].is_fixed; });
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1])) return false;
+    for(Index l : all) {
+      const Vector_3d& L = w_.lines[l].coefficients;
+      if(!(std::abs(L[0] * p[0] + L[1] * p[1] + L[2]) < t_.point_distance)) return false;
+    }
+    return true;
   }
 
   // |sin| of the smallest angle between two lines of point v
@@ -276,6 +320,7 @@ private:
     class_members_.assign(w_.lines.size(), {});
     vertex_members_.assign(w_.vertex_lines.size(), {});
     vertex_sets_.reset(w_.vertex_lines.size());
+    removed_.assign(w_.vertex_lines.size(), false);
   }
 
   // argmin of L^T M L over a^2 + b^2 = 1: with c = -(M_ac a + M_bc b) / M_cc, the smallest
@@ -287,8 +332,11 @@ private:
                  s11 = m(1, 1) - m(1, 2) * m(1, 2) / mcc;
     const double half_trace = 0.5 * (s00 + s11), det = s00 * s11 - s01 * s01;
     const double smallest = half_trace - std::sqrt(std::max(0., half_trace * half_trace - det));
-    double a = s01, b = smallest - s00; // (S - smallest I) (a, b) = 0
-    if(std::abs(a) + std::abs(b) < 1e-300 * (1 + std::abs(half_trace))) { a = smallest - s11; b = s01; }
+    // (S - smallest I) (a, b) = 0: (a, b) is orthogonal to either row of S - smallest I; the
+    // larger row decides (with S diagonal, the lines of a merge all axis-parallel, the first
+    // row can be zero up to rounding, and its orthogonal direction would be noise)
+    double a = s01, b = smallest - s00;
+    if(std::hypot(s00 - smallest, s01) < std::hypot(s01, s11 - smallest)) { a = smallest - s11; b = s01; }
     const double n = std::hypot(a, b);
     if(!(n > 0)) return {std::nan(""), 0, 0};
     a /= n; b /= n;
@@ -352,11 +400,39 @@ private:
       std::sort(l.begin(), l.end());
       l.erase(std::unique(l.begin(), l.end()), l.end());
     }
+    // (b2): a point outside the disk goes with its edges; at the other end of each, the lines
+    // left without an edge there are no longer lines of that point (a point left on one line
+    // then disappears inside its chain)
+    std::vector<bool> removed(vertex_lines.size(), false);
+    for(Index v = 0; v < nv; ++v) if(removed_[v]) removed[new_vertex[v]] = true;
     std::vector<std::array<Index, 3>> old_edges;
+    std::vector<Index> touched;
     for(const auto& e : w_.edges) {
       Index u = new_vertex[e[1]], v = new_vertex[e[2]];
       if(u == v) continue;
+      if(removed[u] || removed[v]) {
+        if(!removed[u]) touched.push_back(u);
+        if(!removed[v]) touched.push_back(v);
+        continue;
+      }
       old_edges.push_back({new_line[e[0]], u, v});
+    }
+    if(!touched.empty()) {
+      std::sort(touched.begin(), touched.end());
+      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+      std::vector<Point_lines> kept(touched.size());
+      for(const auto& e : old_edges)
+        for(int end = 1; end <= 2; ++end) {
+          const auto it = std::lower_bound(touched.begin(), touched.end(), e[end]);
+          if(it != touched.end() && *it == e[end]) kept[it - touched.begin()].push_back(e[0]);
+        }
+      for(std::size_t t = 0; t < touched.size(); ++t) {
+        auto& k = kept[t];
+        std::sort(k.begin(), k.end());
+        k.erase(std::unique(k.begin(), k.end()), k.end());
+        vertex_lines[touched[t]] = std::move(k);
+      }
+      for(Index v = 0; v < vertex_lines.size(); ++v) if(removed[v]) vertex_lines[v].clear();
     }
     w_.lines = std::move(lines);
     w_.vertex_lines = std::move(vertex_lines);
@@ -510,6 +586,8 @@ private:
   Reduction_counts counts_;
   Union_find<Index> line_sets_, vertex_sets_; // the classes of lines and of points merged in a pass
   std::vector<Index> conflicts_;
+  std::vector<bool> removed_; // points outside the disk (b2) that apply() removes with their edges
+  std::vector<Index> degree_; // edges at each point before the first apply()
   std::vector<std::vector<Index>> class_members_;  // lines of each class (at its root) in a pass
   std::vector<std::vector<Index>> vertex_members_; // points of each class (at its root) in a pass
 

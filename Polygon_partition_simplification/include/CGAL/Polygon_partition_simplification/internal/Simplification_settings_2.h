@@ -57,6 +57,7 @@ Simplification_settings simplification_settings(const NamedParameters& np, doubl
   const double ratio = choose_parameter(get_parameter(np, np_::step_ratio), 0.97);
   // (below the default initial step of weights above about 1e6 otherwise)
   const double alpha_min = choose_parameter(get_parameter(np, np_::minimum_step), std::min(1e-9, 0.5 * alpha0));
+  const bool remove_far = choose_parameter(get_parameter(np, np_::remove_far_points), false);
   const std::size_t max_iterations =
     choose_parameter(get_parameter(np, cgal_np::number_of_iterations), std::size_t(100000));
 
@@ -87,6 +88,7 @@ Simplification_settings simplification_settings(const NamedParameters& np, doubl
   s.thresholds.point_distance = d_p;
   s.thresholds.line_distance = d_l;
   s.thresholds.collapse_length = epsilon;
+  s.thresholds.remove_far_points = remove_far;
   s.thresholds.eta = d_p * d_l * d_l / (5. * (1. + 1.)); // Eq. 3.15 with R = 1
   s.initial_step = alpha0;
   s.step_ratio = ratio;
