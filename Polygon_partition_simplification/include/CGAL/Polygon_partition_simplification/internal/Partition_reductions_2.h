@@ -17,11 +17,12 @@
 //    eta = d_P d_L^2 / (5 (1 + R^2))), see 2.
 // 2. A point sent to infinity: if its two most parallel lines are closer than epsilon
 //    everywhere in the disk, the step between them is an edge shorter than epsilon that
-//    collapsed, and they merge (a); otherwise the point is removed with its edges (b2): the
-//    cells around it become one, the lines left without an edge at the other end of each of
-//    its edges leave that point (which disappears if one line is left). A corner of only two
-//    edges, or a point whose lines are all kept back, stays (counted in far_points): the exact
-//    validity check of the caller then redoes the round.
+//    collapsed, and they merge (a). Otherwise, with `remove_far_points`, the point is removed
+//    with its edges (b2): the cells around it become one, the lines left without an edge at
+//    the other end of each of its edges leave that point (which disappears if one line is
+//    left). Without the option, and for a corner of only two edges or a point whose lines are
+//    all kept back, the point stays (counted in far_points): the exact validity check of the
+//    caller then decides whether the round is redone.
 // 3. Restore the invariant (two lines share at most one point, two points at most one line)
 //    with the thesis's faulty pairs: two points sharing two lines merge their lines if these
 //    are closer than d_L, or merge if they are closer than epsilon or if all their lines pass
@@ -167,9 +168,8 @@ public:
               changed = true;
               continue;
             }
-            // otherwise no merge is faithful (merging them anyway, as the thesis does, moved a
-            // wall of the synthetic footprints by 4 m): the caller redoes the round with these
-            // lines kept still
+            // otherwise no merge is faithful (merging them anyway, as the thesis does, can move a
+            // wall by meters): the caller redoes the round with these lines kept still
             for(Index y : {first, v})
               for(Index x : w_.vertex_lines[y])
                 conflicts_.insert(conflicts_.end(), w_.lines[x].members.begin(), w_.lines[x].members.end());
@@ -184,8 +184,8 @@ public:
 private:
   // A point sent to infinity: its two most parallel lines. When they are closer than the
   // collapse distance everywhere in the disk of radius R = 1, the step between them is an
-  // edge shorter than epsilon that went through its collapse: they merge (a). Otherwise
-  // the point is removed with its edges (b2).
+  // edge shorter than epsilon that went through its collapse: they merge (a). Otherwise,
+  // with `remove_far_points`, the point is removed with its edges (b2) by apply().
   void send_to_infinity(Index x)
   {
     const auto& l = w_.vertex_lines[x];
