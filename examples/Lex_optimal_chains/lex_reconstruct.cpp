@@ -1,7 +1,8 @@
 // lex_reconstruct: surface reconstruction from a point cloud as a lexicographic optimal chain.
 //
 //   lex_reconstruct closed INPUT OUTPUT [--interior X,Y,Z]... [--exterior X,Y,Z]...
-//                   [--min-persistence V] [--keep-non-manifold] [--threads N] [--ascii] [--json]
+//                   [--min-persistence V] [--robust [--smoothing-neighbors K]]
+//                   [--keep-non-manifold] [--threads N] [--ascii] [--json]
 //   lex_reconstruct open INPUT OUTPUT (--boundary FILE | --auto-boundary)
 //                   [--coefficients z2|q] [--remove-blocking-points]
 //                   [--drop-boundary-triangles | --keep-boundary-triangles] [--keep-non-manifold]
@@ -249,25 +250,37 @@ static void add_common_statistics(nlohmann::json& j, const std::string& input, c
   j["resolution_changed_triangles"] = r.resolution_changed_facets;
 }
 
-static int run_closed(const std::string& input, const std::string& output, const std::vector<std::string>& interior_text,
-                      const std::vector<std::string>& exterior_text, double min_persistence,
+// What the closed subcommand takes besides the output options.
+struct Closed_options
+{
+  std::vector<std::string> interior_text, exterior_text;
+  double min_persistence = 0; // 0: not given, the adaptive acceptance of the automatic interior
+  bool robust = false;
+  std::size_t smoothing_neighbors = 0;
+};
+
+static int run_closed(const std::string& input, const std::string& output, const Closed_options& c,
                       const Output_options& options)
 {
   Output_file file(output);
   std::vector<Point> interior, exterior;
-  for(const std::string& t : interior_text) interior.push_back(parse_point(t));
-  for(const std::string& t : exterior_text) exterior.push_back(parse_point(t));
+  for(const std::string& t : c.interior_text) interior.push_back(parse_point(t));
+  for(const std::string& t : c.exterior_text) exterior.push_back(parse_point(t));
   const std::vector<Point> points = LOC::IO::read_point_file<Point>(input);
   Progress_bar bar;
   Mesh mesh;
-  const LOC::Closed_surface_report r = CGAL::lex_optimal_closed_surface_reconstruction(
-    points, mesh,
-    LOC::parameters::interior_points(interior,
-    LOC::parameters::exterior_points(exterior,
-    LOC::parameters::minimum_interior_persistence(min_persistence,
-    LOC::parameters::keep_non_manifold(options.keep_non_manifold,
-    LOC::parameters::number_of_threads(options.threads,
-    LOC::parameters::callback(bar.callback())))))));
+  const auto np = LOC::parameters::interior_points(interior,
+                  LOC::parameters::exterior_points(exterior,
+                  LOC::parameters::robust(c.robust,
+                  LOC::parameters::smoothing_neighbors(c.smoothing_neighbors,
+                  LOC::parameters::keep_non_manifold(options.keep_non_manifold,
+                  LOC::parameters::number_of_threads(options.threads,
+                  LOC::parameters::callback(bar.callback())))))));
+  // the adaptive acceptance applies only when no fixed threshold is given
+  const LOC::Closed_surface_report r =
+    c.min_persistence > 0
+      ? CGAL::lex_optimal_closed_surface_reconstruction(points, mesh, LOC::parameters::minimum_interior_persistence(c.min_persistence, np))
+      : CGAL::lex_optimal_closed_surface_reconstruction(points, mesh, np);
   CGAL::Real_timer io;
   io.start();
   file.write(mesh, options.ascii);
@@ -279,6 +292,14 @@ static int run_closed(const std::string& input, const std::string& output, const
     j["genus"] = r.genus; // of the closed components, as split by the documented rule
     j["automatic_interior"] = r.automatic_interior;
     j["interior_persistence"] = r.interior_persistence;
+    j["runner_up_persistence"] = r.runner_up_persistence;
+    j["robust"] = r.robust;
+    j["scale"] = r.smoothing_neighbors; // k of the jet fits (robust)
+    j["smoothing_passes"] = r.smoothing_passes;
+    j["noise_estimate"] = r.noise_estimate;
+    j["average_spacing"] = r.average_spacing;
+    j["smoothing_s"] = r.smoothing_seconds;
+    j["points_on_surface"] = r.mesh_vertices; // input points (smoothed, if robust) that the surface goes through
     j["triangles"] = r.number_of_triangles;
     j["exactly_ordered_triangles"] = r.number_of_exactly_ordered_triangles;
     std::cout << j.dump() << std::endl;
@@ -347,25 +368,31 @@ int main(int argc, char** argv)
   CLI::App app{"Surface reconstruction as a lexicographic optimal chain (Lex_optimal_chains)"};
   app.require_subcommand(1);
   std::string input, output, boundary_file, coefficients = "q";
-  std::vector<std::string> interior_text, exterior_text;
+  Closed_options closed_options;
   Output_options options;
-  double min_persistence = 4;
   bool auto_boundary = false, remove_blocking = false, drop = false, keep = false;
 
   CLI::App* closed = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
   closed->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
   closed->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
-  closed->add_option("--interior", interior_text, "a point inside the surface, X,Y,Z (repeatable)");
-  closed->add_option("--exterior", exterior_text, "a point outside the surface, X,Y,Z (repeatable)");
-  closed->add_option("--min-persistence", min_persistence,
-                     "without --interior: how clearly the automatic interior must stand out (default 4; "
-                     "lower it when the error says the most persistent void is below it)")
+  closed->add_option("--interior", closed_options.interior_text, "a point inside the surface, X,Y,Z (repeatable)");
+  closed->add_option("--exterior", closed_options.exterior_text, "a point outside the surface, X,Y,Z (repeatable)");
+  closed->add_option("--min-persistence", closed_options.min_persistence,
+                     "without --interior: how clearly the automatic interior must stand out (default: from 4, or "
+                     "from 2 when it stands out from the other voids; lower it when the error says the most "
+                     "persistent void is below it)")
     ->check(CLI::Validator(
       [](std::string& text) {
         const double v = std::strtod(text.c_str(), nullptr);
         return std::isfinite(v) && v > 0 ? std::string() : "must be a positive finite number, not " + text;
       },
       "POSITIVE"));
+  auto* robust = closed->add_flag("--robust", closed_options.robust,
+                                  "smooth noisy points (jet fitting) before the reconstruction");
+  closed->add_option("--smoothing-neighbors", closed_options.smoothing_neighbors,
+                     "with --robust: neighbours of the jet fits (default: estimated from the points, at least 24)")
+    ->needs(robust)
+    ->check(CLI::Range(std::size_t(8), std::size_t(100000)));
   add_output_options(closed, options);
 
   CLI::App* open = app.add_subcommand("open", "open surface bounded by closed polylines");
@@ -395,7 +422,7 @@ int main(int argc, char** argv)
     return 1;
   }
   try {
-    if(closed->parsed()) return run_closed(input, output, interior_text, exterior_text, min_persistence, options);
+    if(closed->parsed()) return run_closed(input, output, closed_options, options);
     return run_open(input, output, boundary_file, auto_boundary, coefficients, remove_blocking, drop, keep, options);
   } catch(const std::exception& e) {
     std::cerr << "lex_reconstruct: error: " << e.what() << std::endl;

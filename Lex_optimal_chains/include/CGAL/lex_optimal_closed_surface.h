@@ -12,6 +12,7 @@
 #include <CGAL/Lex_optimal_chains/Closed_surface_report.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Noise_smoothing_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Geom_traits_check.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_pipeline_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
@@ -188,15 +189,29 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
     \cgalParamType{a model of `LexOptimalChainsTraits_3` whose `Point_3` is the point type}
     \cgalParamDefault{the kernel of the points (`CGAL::Kernel_traits`)}
   \cgalParamNEnd
+  \cgalParamNBegin{robust}
+    \cgalParamDescription{if `true`, the points are first smoothed for noise: each moved onto a jet (a local
+                          quadric) fitted to its nearest neighbours, pass after pass until a pass moves them
+                          by less than 5% of what the first did (at most 6 passes; see the user manual,
+                          section "Noisy scans"); the surface goes through the smoothed points}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{smoothing_neighbors}
+    \cgalParamDescription{the number of neighbours of the jet fits of the robust mode}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{0: CGAL's `estimate_global_k_neighbor_scale()` of the points, at least 24}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower) and for the contraction of the dual graph and the keys and the sort of its triangles (from 200,000 cells); the result does not depend on it}
+    \cgalParamDescription{threads used for the Delaunay triangulation (with TBB, from 100,000 points: below, the parallel construction is slower), for the smoothing of the robust mode, and for the contraction of the dual graph and the keys and the sort of its triangles (from 200,000 cells); the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \throws Lex_optimal_chains::Input_error on empty input, NaN or infinite coordinates, fewer than
-4 distinct points, coplanar points, and the errors of `lex_optimal_closed_surface()`.
+4 distinct points, coplanar points, `robust` without Eigen, and the errors of
+`lex_optimal_closed_surface()`.
 */
 template <class PointRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Closed_surface_report
@@ -225,6 +240,17 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
   std::vector<Point> pts = Lex_optimal_chains::internal::finite_points<Point>(points, point_map);
   report.number_of_input_points = pts.size();
   if(callback && !callback(0.0)) throw Input_error(Code::CANCELLED, "cancelled by the callback");
+  if(choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::robust), false)) {
+    watch.lap(); // reading the points is not smoothing
+    const Lex_optimal_chains::internal::Noise_smoothing_result s = Lex_optimal_chains::internal::smooth_noisy_points(
+      pts, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::smoothing_neighbors), std::size_t(0)), threads);
+    report.robust = true;
+    report.smoothing_neighbors = s.neighbors;
+    report.smoothing_passes = s.passes;
+    report.noise_estimate = s.noise_estimate;
+    report.average_spacing = s.average_spacing;
+    report.smoothing_seconds = watch.lap();
+  }
   Lex_optimal_chains::internal::with_delaunay_triangulation(pts, traits, threads, [&](auto& dt) {
     std::vector<Point>().swap(pts); // freed as soon as possible: peak memory
     report.delaunay_seconds = watch.lap();

@@ -28,6 +28,13 @@ struct Closed_surface_report
   std::size_t resolution_changed_facets = 0;   ///< facets in the symmetric difference of the optimal cycle and the output cycle
   bool automatic_interior = false;             ///< true if the interior cell was chosen automatically
   double interior_persistence = 0;             ///< persistence ratio of the automatic interior
+  double runner_up_persistence = 0;            ///< persistence ratio of the second most persistent void (1 if none), with the automatic interior
+  bool robust = false;                         ///< true if the points were smoothed first (`robust`; reconstruction only)
+  std::size_t smoothing_neighbors = 0;         ///< k of the jet fits of the robust mode
+  std::size_t smoothing_passes = 0;            ///< smoothing passes of the robust mode
+  double noise_estimate = 0;                   ///< median distance by which the first smoothing pass moved the points (robust mode)
+  double average_spacing = 0;                  ///< mean distance of an input point to its 6 nearest neighbours (robust mode)
+  double smoothing_seconds = 0;                ///< time of the smoothing (robust mode)
   double delaunay_seconds = 0;                 ///< time to build the Delaunay triangulation
   double order_seconds = 0;                    ///< time to order the triangles (largest triangle of each cell, contraction, sort of the others)
   double cut_seconds = 0;                      ///< time of the automatic interior and of Algorithm 8

@@ -35,7 +35,8 @@ enum class Input_error_code
   BOUNDARY_FAR_FROM_POINTS,    ///< a boundary polyline is farther from the points than their own extent
   INVALID_CHAIN,               ///< a triangle of a given chain is not a facet of the triangulation
   EMPTY_RESULT,                ///< every triangle of the result was dropped (`drop_boundary_triangles`): the points do not span the boundary
-  UNREADABLE_FILE              ///< an input file cannot be opened or read, is malformed, or holds more than its header declares
+  UNREADABLE_FILE,             ///< an input file cannot be opened or read, is malformed, or holds more than its header declares
+  UNSUPPORTED_OPTION           ///< an option needs a library the program was built without (`robust` needs Eigen)
 };
 
 /*!

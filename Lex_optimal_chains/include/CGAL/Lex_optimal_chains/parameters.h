@@ -25,6 +25,8 @@ enum relative_facets_t { relative_facets };
 enum remove_blocking_points_t { remove_blocking_points };
 enum drop_boundary_triangles_t { drop_boundary_triangles };
 enum keep_non_manifold_t { keep_non_manifold };
+enum robust_t { robust };
+enum smoothing_neighbors_t { smoothing_neighbors };
 
 } // namespace internal_np
 
@@ -66,6 +68,10 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(remove_blocking_points)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(drop_boundary_triangles)
 /// Keeps the optimal chain as it is, without resolving its non-manifold vertices.
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(keep_non_manifold)
+/// Smooths noisy points by jet fitting before the closed surface reconstruction.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(robust)
+/// Number of neighbours of the jet fits of the robust mode (0: chosen from the data).
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(smoothing_neighbors)
 
 #undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
 

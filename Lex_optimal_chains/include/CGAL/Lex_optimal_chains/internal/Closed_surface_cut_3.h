@@ -53,6 +53,7 @@ struct Automatic_interior
 {
   std::uint32_t cell = 0;   // position of the chosen cell
   double persistence = 0;   // R_B^2 at birth / R_B^2 at death of its component
+  double runner_up_persistence = 1; // the largest ratio among the other deaths (1: none above 1)
 };
 
 // The dual graph after the contraction: the cells (by position in the cell container) with
@@ -160,7 +161,8 @@ private:
 // born at its first (largest) facet and dies when it joins an older one (elder rule); the
 // component of the sinks is the oldest. The cell through which the most persistent component
 // was born, measured by the ratio of R_B^2 at birth and at death, is the interior; among equal
-// ratios, the first death in the order wins.
+// ratios, the first death in the order wins. The largest ratio of the other deaths is kept too:
+// it tells whether the interior stands out from the voids of the noise.
 //
 // On the contracted graph (built without sources): a component of the contraction is born at
 // its largest facet, the facet shared by the two cells whose largest facet it is, and the
@@ -233,9 +235,12 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
     const double dies = key_value(r.key);
     const double persistence = dies > 0 ? born / dies : std::numeric_limits<double>::infinity();
     if(!found || persistence > best.persistence) {
+      if(found) best.runner_up_persistence = best.persistence;
       best.cell = births[young_birth].cell;
       best.persistence = persistence;
       found = true;
+    } else if(persistence > best.runner_up_persistence) {
+      best.runner_up_persistence = persistence;
     }
     birth_of_root[sets.link_roots(a, b)] = old_birth;
     tree.push_back(std::uint32_t(m - 1 - t));
@@ -262,6 +267,7 @@ Automatic_interior most_persistent_void(const Contracted_dual_graph_3<Triangulat
     const std::uint32_t other = contracted.across(first_cell);
     best.cell = contracted.is_contracted(other) ? (std::max)(first_cell, other) : first_cell;
     best.persistence = 1;
+    best.runner_up_persistence = 1;
     const double v = contracted.key_value_of(first);
     if(!(v > 0)) best.persistence = std::numeric_limits<double>::infinity();
   }

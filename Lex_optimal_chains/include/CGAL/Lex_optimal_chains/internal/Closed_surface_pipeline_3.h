@@ -72,6 +72,35 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
   return cells;
 }
 
+// The automatic interior is accepted when its persistence reaches `minimum_interior_persistence`
+// if the user gave one. Otherwise it is accepted from a persistence of 4, or from 2 when it
+// stands out from the other voids: at least the square of the second largest ratio (on a log
+// scale, its bar at least twice as long). Noisy or unevenly sampled closed surfaces have
+// interiors of low persistence, but the voids of their noise are lower still; a partial scan
+// has no void that stands out.
+template <class NamedParameters>
+void check_automatic_interior(const Automatic_interior& a, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  constexpr bool adaptive =
+    parameters::is_default_parameter<NamedParameters, Lex_optimal_chains::internal_np::minimum_interior_persistence_t>::value;
+  const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
+  if(a.persistence >= minimum) return;
+  if(adaptive && a.persistence >= 2 && a.persistence >= a.runner_up_persistence * a.runner_up_persistence) return;
+  std::ostringstream msg;
+  msg << "no interior point given, and the most persistent void has a persistence of only " << a.persistence;
+  if(adaptive && a.persistence < 2)
+    msg << " (< 2)";
+  else if(adaptive)
+    msg << " (< 4, and not the square of the second most persistent void's, " << a.runner_up_persistence
+        << ": it does not stand out from the voids of the noise)";
+  else
+    msg << " (< " << minimum << ")";
+  msg << ": the points do not seem to sample a closed surface; give an interior point";
+  throw Input_error(Input_error_code::NO_INTERIOR_FOUND, msg.str());
+}
+
 // The common part: constraints, contracted and sorted dual graph, Algorithm 8. Returns the facets of the
 // optimal cycle in decreasing order, each as the key 4 * p + i of facet i of the cell at
 // position p in the numbering `cells` (`Closed_surface_mesh_3::facet_key()`) that owns its
@@ -143,19 +172,13 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   const Stage_progress cut_progress{&callback, progress_from + 0.6 * span, progress_from + 0.8 * span};
   Dual_edge_records cut;
   if(sources.empty()) {
-    const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
     Dense_numbers components; // of the contraction
     std::vector<std::uint32_t> spanning_tree;
     const Automatic_interior a = most_persistent_void(contracted, components, spanning_tree);
     report.automatic_interior = true;
     report.interior_persistence = a.persistence;
-    if(!(a.persistence >= minimum)) {
-      std::ostringstream msg;
-      msg << "no interior point given, and the most persistent void has a persistence of only "
-          << a.persistence << " (< " << minimum << "): the points do not seem to sample a closed "
-          << "surface; give an interior point";
-      throw Input_error(Input_error_code::NO_INTERIOR_FOUND, msg.str());
-    }
+    report.runner_up_persistence = a.runner_up_persistence;
+    check_automatic_interior(a, np);
     if(verbose)
       std::cerr << "Lex_optimal_chains: automatic interior cell, persistence " << a.persistence << ", in "
                 << watch.elapsed() << " s (" << spanning_tree.size() << " tree facets between components)\n";

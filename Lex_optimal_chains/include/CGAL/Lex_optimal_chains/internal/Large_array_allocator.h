@@ -25,6 +25,10 @@
 #include <vector>
 
 #if defined(__linux__)
+// <sys/mman.h> defines MAP_TYPE, the name of a template parameter in CGAL 5.5's
+// compare_vertices.h (included by CGAL/estimate_scale.h): that header comes first, so that a
+// user's later inclusion of it still compiles
+#include <CGAL/compare_vertices.h>
 #include <sys/mman.h>
 #endif
 
