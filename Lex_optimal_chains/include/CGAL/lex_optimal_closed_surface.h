@@ -70,7 +70,9 @@ swapped when `i` is odd, is oriented outward.
   \cgalParamNBegin{minimum_interior_persistence}
     \cgalParamDescription{the automatic interior is refused below this persistence ratio}
     \cgalParamType{`double`}
-    \cgalParamDefault{4}
+    \cgalParamDefault{none: the interior is accepted when it stands out from the other voids (a ratio of at
+                      least 2 and at least the square of the second largest ratio), or, unless `robust`,
+                      from a ratio of 4}
   \cgalParamNEnd
   \cgalParamNBegin{callback}
     \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels (the last
@@ -192,8 +194,11 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
   \cgalParamNBegin{robust}
     \cgalParamDescription{if `true`, the points are first smoothed for noise: each moved onto a jet (a local
                           quadric) fitted to its nearest neighbours, pass after pass until a pass moves them
-                          by less than 5% of what the first did (at most 6 passes; see the user manual,
-                          section "Noisy scans"); the surface goes through the smoothed points}
+                          by less than 5% of what the first did (at most 6 passes; points whose first pass
+                          moved them by less than 5% of their spacing are left as they were; see the user
+                          manual, section "Noisy scans"); the surface goes through the smoothed points. The
+                          automatic interior must then stand out from the other voids (see
+                          `minimum_interior_persistence`)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd

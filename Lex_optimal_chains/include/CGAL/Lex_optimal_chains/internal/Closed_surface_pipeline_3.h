@@ -73,11 +73,13 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
 }
 
 // The automatic interior is accepted when its persistence reaches `minimum_interior_persistence`
-// if the user gave one. Otherwise it is accepted from a persistence of 4, or from 2 when it
-// stands out from the other voids: at least the square of the second largest ratio (on a log
-// scale, its bar at least twice as long). Noisy or unevenly sampled closed surfaces have
-// interiors of low persistence, but the voids of their noise are lower still; a partial scan
-// has no void that stands out.
+// if the user gave one. Otherwise it must stand out from the other voids: its ratio at least 2
+// and at least the square of the second largest ratio (on a log scale, its bar at least twice
+// as long), which noisy or unevenly sampled closed surfaces pass with interiors of low
+// persistence while a partial scan has no such void. Without the robust mode, a ratio of 4 is
+// also enough, as it was before the rule (several closed surfaces give several long bars).
+// In the robust mode it is not: smoothing very noisy points can make pockets of similar
+// persistence, one of which would be taken for the interior.
 template <class NamedParameters>
 void check_automatic_interior(const Automatic_interior& a, const NamedParameters& np)
 {
@@ -85,16 +87,17 @@ void check_automatic_interior(const Automatic_interior& a, const NamedParameters
   using parameters::get_parameter;
   constexpr bool adaptive =
     parameters::is_default_parameter<NamedParameters, Lex_optimal_chains::internal_np::minimum_interior_persistence_t>::value;
+  const bool robust = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::robust), false);
   const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
-  if(a.persistence >= minimum) return;
-  if(adaptive && a.persistence >= 2 && a.persistence >= a.runner_up_persistence * a.runner_up_persistence) return;
+  const bool stands_out = a.persistence >= 2 && a.persistence >= a.runner_up_persistence * a.runner_up_persistence;
+  if(adaptive ? stands_out || (!robust && a.persistence >= minimum) : a.persistence >= minimum) return;
   std::ostringstream msg;
   msg << "no interior point given, and the most persistent void has a persistence of only " << a.persistence;
   if(adaptive && a.persistence < 2)
     msg << " (< 2)";
   else if(adaptive)
-    msg << " (< 4, and not the square of the second most persistent void's, " << a.runner_up_persistence
-        << ": it does not stand out from the voids of the noise)";
+    msg << (robust ? " (" : " (< 4, and ") << "not the square of the second most persistent void's, "
+        << a.runner_up_persistence << ": it does not stand out from the voids of the noise)";
   else
     msg << " (< " << minimum << ")";
   msg << ": the points do not seem to sample a closed surface; give an interior point";

@@ -8,7 +8,8 @@
 // onto jets (local quadrics, CGAL's `jet_smooth_point_set()`) fitted to their k nearest
 // neighbours, pass after pass, until a pass moves them (median displacement) by less than 5%
 // of what the first pass did. The first pass's median displacement is the noise estimate: the
-// typical distance of a point from the smooth surface through its neighbours. k is the user's,
+// typical distance of a point from the smooth surface through its neighbours. Points whose
+// noise estimate is below 5% of their average spacing are clean and left as they are. k is the user's,
 // or CGAL's `estimate_global_k_neighbor_scale()` (the scale at which the noise is averaged out,
 // Giraudot et al. 2013) but at least 24: below, the jets of a noisy sphere follow the noise
 // and the surface zig-zags (see the user manual, section "Noisy scans").
@@ -47,6 +48,9 @@ struct Noise_smoothing_result
 
 constexpr std::size_t minimum_smoothing_neighbors = 24;
 constexpr std::size_t maximum_smoothing_passes = 6;
+// below this noise estimate, in average spacings, the points are clean: a jet through 24
+// neighbours or more would only round off their features
+constexpr double clean_noise_ratio = 0.05;
 
 template <class Point>
 double median_displacement(const std::vector<Point>& before, const std::vector<Point>& after)
@@ -82,7 +86,14 @@ Noise_smoothing_result smooth_noisy_points(std::vector<Point>& points, std::size
       CGAL::jet_smooth_point_set<CGAL::Sequential_tag>(points, unsigned(result.neighbors));
     ++result.passes;
     const double moved = median_displacement(before, points);
-    if(pass == 0) result.noise_estimate = moved;
+    if(pass == 0) {
+      result.noise_estimate = moved;
+      if(moved < clean_noise_ratio * result.average_spacing) { // clean: left as it was
+        points.swap(before);
+        result.passes = 0;
+        break;
+      }
+    }
     if(!(moved >= 0.05 * result.noise_estimate)) break; // also when the first pass moved nothing
   }
   (void)threads;
