@@ -65,7 +65,8 @@ struct Lex_request
   CGAL::Three::Scene_interface::Item_id points_item = -1;
   CGAL::Three::Scene_interface::Item_id interior_item = -1; // closed: -1 for the automatic interior
   CGAL::Three::Scene_interface::Item_id boundary_item = -1; // open: -1 for the footprint polygon
-  double min_persistence = 4;                               // closed, automatic interior
+  double min_persistence = 0;                               // closed, automatic interior: 0 for "stands out"
+  bool robust = false;                                      // closed: smooth noisy points first
   bool rational = true;                                     // open: Q (oriented) or Z2
   bool remove_blocking = false;                             // open
   bool keep_non_manifold = false;
@@ -182,6 +183,7 @@ public:
     r.interior_item = interiorCombo->currentData().toInt();
     r.boundary_item = boundaryCombo->currentData().toInt();
     r.min_persistence = persistenceSpinBox->value();
+    r.robust = robustCheckBox->isChecked();
     r.rational = qRadioButton->isChecked();
     r.remove_blocking = removeBlockingCheckBox->isChecked();
     r.keep_non_manifold = keepNonManifoldCheckBox->isChecked();
@@ -220,14 +222,17 @@ public Q_SLOTS:
   void on_actionLexOpenSurface_triggered() { run_from_dialog(false); }
 
   // Scripting: the index of the new surface mesh item, or -1 (reason in lastError()).
-  // interior_item: a point set item, or -1 for the automatic interior.
-  int closedSurface(int points_item, int interior_item = -1, double min_persistence = 4)
+  // interior_item: a point set item, or -1 for the automatic interior; min_persistence 0
+  // accepts it when it stands out from the other voids (the library's default); robust
+  // smooths noisy points first.
+  int closedSurface(int points_item, int interior_item = -1, double min_persistence = 0, bool robust = false)
   {
     Lex_request r;
     r.closed = true;
     r.points_item = points_item;
     r.interior_item = interior_item;
     r.min_persistence = min_persistence;
+    r.robust = robust;
     return run(r, false);
   }
 
@@ -359,16 +364,25 @@ QString Polyhedron_demo_lex_optimal_chains_plugin::reconstruct(const Lex_request
     std::vector<Point> interior;
     if(r.interior_item >= 0)
       interior = points_of(*qobject_cast<Scene_points_with_normal_item*>(scene->item(r.interior_item)));
-    const LOC::Closed_surface_report report = CGAL::lex_optimal_closed_surface_reconstruction(
-      points, mesh,
-      LOC::parameters::interior_points(interior,
-      LOC::parameters::minimum_interior_persistence(r.min_persistence,
-      LOC::parameters::keep_non_manifold(r.keep_non_manifold,
-      LOC::parameters::number_of_threads(threads,
-      LOC::parameters::callback(progress.callback()))))));
-    return tr("%1 interior (persistence %2); %3 non-manifold edges, %4 non-manifold vertices split; "
-              "times: Delaunay %5 s, order %6 s, cut %7 s, resolution %8 s, mesh %9 s, total %10 s")
+    const auto np = LOC::parameters::interior_points(interior,
+                    LOC::parameters::robust(r.robust,
+                    LOC::parameters::keep_non_manifold(r.keep_non_manifold,
+                    LOC::parameters::number_of_threads(threads,
+                    LOC::parameters::callback(progress.callback())))));
+    // a fixed threshold only when one is given, as lex_reconstruct --min-persistence
+    const LOC::Closed_surface_report report =
+      r.min_persistence > 0
+        ? CGAL::lex_optimal_closed_surface_reconstruction(points, mesh, LOC::parameters::minimum_interior_persistence(r.min_persistence, np))
+        : CGAL::lex_optimal_closed_surface_reconstruction(points, mesh, np);
+    QString smoothing;
+    if(report.robust)
+      smoothing = tr("; smoothed: k %1, %2 passes, noise estimate %3 (spacing %4)")
+                    .arg(report.smoothing_neighbors).arg(report.smoothing_passes)
+                    .arg(report.noise_estimate).arg(report.average_spacing);
+    return tr("%1 interior (persistence %2, next void %3)%4; %5 non-manifold edges, %6 non-manifold vertices split; "
+              "times: Delaunay %7 s, order %8 s, cut %9 s, resolution %10 s, mesh %11 s, total %12 s")
       .arg(report.automatic_interior ? tr("automatic") : tr("given")).arg(report.interior_persistence)
+      .arg(report.runner_up_persistence).arg(smoothing)
       .arg(report.non_manifold_edges).arg(report.non_manifold_vertices)
       .arg(report.delaunay_seconds).arg(report.order_seconds).arg(report.cut_seconds)
       .arg(report.resolution_seconds).arg(report.output_seconds).arg(report.total_seconds);

@@ -6,7 +6,14 @@ run_test(function () {
     if (item < 0)
         throw lex_optimal_chains_plugin.lastError()
     snapshot("closed_kitten.png")
+    // oni.ply: its automatic interior stands out (the default), and the robust mode
+    var oni = load(DATA + "/oni.ply", "ply_plugin")
+    var oni_item = lex_optimal_chains_plugin.closedSurface(oni)
+    var oni_robust = lex_optimal_chains_plugin.closedSurface(oni, -1, 0, true)
+    if (oni_item < 0 || oni_robust < 0)
+        throw lex_optimal_chains_plugin.lastError()
     // the menu actions exist (a script would block in their dialog: it calls the slots)
-    return { mesh: statistics(item), points_visible: scene.item(points).visible,
+    return { mesh: statistics(item), oni: statistics(oni_item), oni_robust: statistics(oni_robust),
+             points_visible: scene.item(points).visible,
              actions: [actionLexClosedSurface.text, actionLexOpenSurface.text] }
 })
