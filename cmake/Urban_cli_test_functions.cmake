@@ -26,3 +26,13 @@ function(expect_cli_failure name output)
   message(STATUS "${name}: ${err}")
   set(last_error "${err}" PARENT_SCOPE)
 endfunction()
+
+# expect_json_keys(name json key...): the JSON line `json` has every key
+function(expect_json_keys name json)
+  foreach(key ${ARGN})
+    string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
+    if(missing)
+      message(FATAL_ERROR "${name}: the JSON line has no '${key}': ${json}")
+    endif()
+  endforeach()
+endfunction()

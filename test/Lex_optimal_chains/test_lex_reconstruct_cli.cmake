@@ -59,14 +59,10 @@ execute_process(COMMAND "${PROGRAM}" closed "${DATA}/points_3/kitten.xyz" "${WOR
 if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/kitten.ply")
   message(FATAL_ERROR "kitten: exit code ${rc}")
 endif()
-foreach(key delaunay_s order_s cut_s resolution_s mesh_s write_s output_s total_s peak_rss_mb vertices faces
-            components boundary_edges non_manifold_vertices non_manifold_edges resolved_non_manifold_vertices
-            resolution_changed_triangles closed genus)
-  string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
-  if(missing)
-    message(FATAL_ERROR "kitten: JSON has no '${key}': ${json}")
-  endif()
-endforeach()
+expect_json_keys("kitten" "${json}" delaunay_s order_s cut_s resolution_s mesh_s write_s output_s
+                 total_s peak_rss_mb vertices faces components boundary_edges non_manifold_vertices
+                 non_manifold_edges resolved_non_manifold_vertices resolution_changed_triangles
+                 closed genus)
 string(JSON closed GET "${json}" closed)
 string(JSON components GET "${json}" components)
 if(NOT closed STREQUAL "ON" OR NOT components EQUAL 1)
@@ -149,12 +145,8 @@ execute_process(COMMAND "${PROGRAM}" closed "${DATA}/points_3/oni.ply" "${WORK}/
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "oni --robust: exit code ${rc}")
 endif()
-foreach(key robust scale smoothing_passes noise_estimate average_spacing smoothing_s points_on_surface)
-  string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
-  if(missing)
-    message(FATAL_ERROR "oni --robust: JSON has no '${key}': ${json}")
-  endif()
-endforeach()
+expect_json_keys("oni --robust" "${json}" robust scale smoothing_passes noise_estimate
+                 average_spacing smoothing_s points_on_surface)
 string(JSON robust GET "${json}" robust)
 string(JSON scale GET "${json}" scale)
 string(JSON noise GET "${json}" noise_estimate)
@@ -209,14 +201,10 @@ foreach(field q z2)
   if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/b9_${field}.off")
     message(FATAL_ERROR "b9_training (${field}): exit code ${rc}")
   endif()
-  foreach(key delaunay_s order_s representative_s optimal_chain_s resolution_s mesh_s write_s output_s total_s
-              peak_rss_mb vertices faces components boundary_edges non_manifold_vertices non_manifold_edges
-              resolved_non_manifold_vertices resolution_changed_triangles closed genus)
-    string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
-    if(missing)
-      message(FATAL_ERROR "b9_training: JSON has no '${key}': ${json}")
-    endif()
-  endforeach()
+  expect_json_keys("b9_training" "${json}" delaunay_s order_s representative_s optimal_chain_s
+                   resolution_s mesh_s write_s output_s total_s peak_rss_mb vertices faces
+                   components boundary_edges non_manifold_vertices non_manifold_edges
+                   resolved_non_manifold_vertices resolution_changed_triangles closed genus)
   string(JSON closed GET "${json}" closed)
   string(JSON components GET "${json}" components)
   string(JSON faces GET "${json}" faces)

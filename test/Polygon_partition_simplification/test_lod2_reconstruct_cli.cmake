@@ -3,6 +3,7 @@ cmake_minimum_required(VERSION 3.19) # string(JSON)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 set(building "${DATA}/points_3/building.ply")
+include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/Urban_cli_test_functions.cmake")
 
 # a closed model, as OFF and as CityJSON, with the statistics of the issue
 foreach(output building.off building.city.json)
@@ -11,13 +12,9 @@ foreach(output building.off building.city.json)
   if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/${output}")
     message(FATAL_ERROR "lod2_reconstruct ${output} failed (${rc}): ${err}")
   endif()
-  foreach(key points planes segments cells_before cells_after buildings faces rms_m planes_s segments_s partition_s
-              simplification_s lift_s extrusion_s total_s peak_rss_mb)
-    string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
-    if(missing)
-      message(FATAL_ERROR "${output}: no '${key}' in ${json}")
-    endif()
-  endforeach()
+  expect_json_keys("${output}" "${json}" points planes segments cells_before cells_after buildings
+                   faces rms_m planes_s segments_s partition_s simplification_s lift_s extrusion_s
+                   total_s peak_rss_mb)
   string(JSON closed GET "${json}" closed)
   string(JSON buildings GET "${json}" buildings)
   if(NOT closed STREQUAL "ON" AND NOT closed STREQUAL "true" OR NOT buildings EQUAL 1)
@@ -33,7 +30,6 @@ if(NOT version STREQUAL "1.1" OR NOT type STREQUAL "Building" OR NOT lod STREQUA
   message(FATAL_ERROR "building.city.json: version ${version}, type ${type}, lod ${lod}")
 endif()
 
-include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/Urban_cli_test_functions.cmake")
 
 # expect_failure(name input output [options...]): exit code 1, one line, no output
 macro(expect_failure name input out)

@@ -41,13 +41,9 @@ execute_process(COMMAND "${PROGRAM}" "${DATA}/footprints_25.txt" "${WORK}/out.ge
 if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/out.geojson" OR NOT EXISTS "${WORK}/out.svg")
   message(FATAL_ERROR "simplify_partition failed on good input (${rc})")
 endif()
-foreach(key segments lines_before lines_after points_before points_after cells_before cells_after
-            orthogonal_pairs_after kinetic_s simplification_s)
-  string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
-  if(missing)
-    message(FATAL_ERROR "the JSON line has no '${key}': ${json}")
-  endif()
-endforeach()
+expect_json_keys("simplify_partition" "${json}" segments lines_before lines_after points_before
+                 points_after cells_before cells_after orthogonal_pairs_after kinetic_s
+                 simplification_s)
 string(JSON before GET "${json}" cells_before)
 string(JSON after GET "${json}" cells_after)
 file(READ "${WORK}/out.geojson" geojson)
