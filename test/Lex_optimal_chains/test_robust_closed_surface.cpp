@@ -170,6 +170,12 @@ int main(int argc, char** argv)
     const LOC::Closed_surface_report r = CGAL::lex_optimal_closed_surface_reconstruction(
       s.points, mesh, LOC::parameters::robust(true, LOC::parameters::smoothing_neighbors(std::size_t(40))));
     assert(r.smoothing_neighbors == 40 && CGAL::is_closed(mesh));
+    Mesh unchanged;
+    expect_error(LOC::Input_error_code::INVALID_PARAMETER, [&] {
+      CGAL::lex_optimal_closed_surface_reconstruction(
+        s.points, unchanged, LOC::parameters::robust(true, LOC::parameters::smoothing_neighbors(std::size_t(3))));
+    });
+    assert(num_faces(unchanged) == 0);
   }
   std::cout << "all robust closed surface checks passed\n";
   return 0;

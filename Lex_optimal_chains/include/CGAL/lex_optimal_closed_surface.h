@@ -203,7 +203,7 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
     \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{smoothing_neighbors}
-    \cgalParamDescription{the number of neighbours of the jet fits of the robust mode}
+    \cgalParamDescription{the number of neighbours of the jet fits of the robust mode (0, or at least 8)}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{0: CGAL's `estimate_global_k_neighbor_scale()` of the points, at least 24}
   \cgalParamNEnd
@@ -215,7 +215,8 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
 \cgalNamedParamsEnd
 
 \throws Lex_optimal_chains::Input_error on empty input, NaN or infinite coordinates, fewer than
-4 distinct points, coplanar points, `robust` without Eigen, and the errors of
+4 distinct points, coplanar points, `robust` without Eigen, `smoothing_neighbors` from 1 to 7,
+and the errors of
 `lex_optimal_closed_surface()`.
 */
 template <class PointRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>

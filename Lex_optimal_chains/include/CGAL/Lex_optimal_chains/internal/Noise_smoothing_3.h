@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -68,6 +69,9 @@ template <class Point>
 Noise_smoothing_result smooth_noisy_points(std::vector<Point>& points, std::size_t neighbors, unsigned threads)
 {
   Noise_smoothing_result result;
+  if(neighbors > 0 && neighbors < 8) // a quadric has 6 coefficients: a fit needs more neighbours
+    throw Input_error(Input_error_code::INVALID_PARAMETER,
+                      "smoothing_neighbors must be 0 (chosen from the points) or at least 8, not " + std::to_string(neighbors));
   if(points.size() < 16) return result;
 #if defined(CGAL_EIGEN3_ENABLED)
   result.average_spacing = CGAL::compute_average_spacing<CGAL::Sequential_tag>(points, 6);
