@@ -83,9 +83,15 @@ void check_determinism(const Shape& s)
   for(std::size_t i = shuffled.size(); i > 1; --i) std::swap(shuffled[i - 1], shuffled[rng.get_int(0, int(i))]);
   CGAL::lex_optimal_closed_surface_reconstruction(shuffled, b, LOC::parameters::robust(true));
   CGAL::lex_optimal_closed_surface_reconstruction(s.points, c, LOC::parameters::robust(true, LOC::parameters::number_of_threads(2u)));
+  // each point three times: the duplicates are merged before the smoothing
+  std::vector<Point> tripled = s.points;
+  for(int copy = 0; copy < 2; ++copy) tripled.insert(tripled.end(), s.points.begin(), s.points.end());
+  Mesh d;
+  CGAL::lex_optimal_closed_surface_reconstruction(tripled, d, LOC::parameters::robust(true));
   assert(triangle_set(a) == triangle_set(b));
   assert(triangle_set(a) == triangle_set(c));
-  std::cout << s.name << ": the same " << num_faces(a) << " triangles for shuffled points and 2 threads\n";
+  assert(triangle_set(a) == triangle_set(d));
+  std::cout << s.name << ": the same " << num_faces(a) << " triangles for shuffled points, 2 threads and every point tripled\n";
 }
 
 std::vector<Point_with_normal> read_with_normals(const std::string& path)
@@ -162,6 +168,25 @@ int main(int argc, char** argv)
     const LOC::Closed_surface_report r = CGAL::lex_optimal_closed_surface_reconstruction(
       tetrahedron, mesh, LOC::parameters::robust(true, LOC::parameters::interior_points(std::vector<Point>{Point(0.1, 0.1, 0.1)})));
     assert(r.robust && r.smoothing_passes == 0 && r.noise_estimate == 0 && CGAL::is_closed(mesh));
+  }
+  // degenerate neighbourhoods: 20 points, each 100 times (CGAL's jet fit crashes on copies of
+  // one point), and points on a plane: a typed error or a closed surface, never a crash
+  {
+    CGAL::Random rng(7);
+    std::vector<Point> copies, plane;
+    for(int i = 0; i < 20; ++i) copies.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
+    for(int copy = 0; copy < 99; ++copy) copies.insert(copies.end(), copies.begin(), copies.begin() + 20);
+    for(int i = 0; i < 500; ++i) plane.emplace_back(rng.get_double(), rng.get_double(), 0);
+    Mesh mesh;
+    try {
+      CGAL::lex_optimal_closed_surface_reconstruction(copies, mesh, LOC::parameters::robust(true));
+      assert(CGAL::is_closed(mesh));
+    } catch(const LOC::Input_error& e) {
+      std::cout << "  20 points 100 times: " << e.what() << "\n";
+      assert(num_faces(mesh) == 0);
+    }
+    expect_error(LOC::Input_error_code::DEGENERATE_POINT_SET,
+                 [&] { CGAL::lex_optimal_closed_surface_reconstruction(plane, mesh, LOC::parameters::robust(true)); });
   }
   // the number of neighbours given is the one used
   {

@@ -53,6 +53,18 @@ constexpr std::size_t maximum_smoothing_passes = 6;
 // neighbours or more would only round off their features
 constexpr double clean_noise_ratio = 0.05;
 
+// true if some 4 of the points span a tetrahedron (exact predicates): otherwise the jets of
+// their neighbourhoods are not defined, and the triangulation reports the degeneracy
+template <class Point>
+bool spans_a_tetrahedron(const std::vector<Point>& points)
+{
+  std::size_t i = 1, j, k;
+  while(i < points.size() && points[i] == points[0]) ++i;
+  for(j = i + 1; j < points.size() && CGAL::collinear(points[0], points[i], points[j]); ++j) {}
+  for(k = j + 1; k < points.size() && CGAL::coplanar(points[0], points[i], points[j], points[k]); ++k) {}
+  return k < points.size();
+}
+
 template <class Point>
 double median_displacement(const std::vector<Point>& before, const std::vector<Point>& after)
 {
@@ -62,9 +74,12 @@ double median_displacement(const std::vector<Point>& before, const std::vector<P
   return d[d.size() / 2];
 }
 
-// Smooths `points` in place (same order, one output point per input point). `neighbors` 0
-// chooses k from the data. Fewer than 16 points are left as they are: a quadric needs more
-// neighbours than that to average anything.
+// Smooths `points` in place. Duplicates are removed first (the triangulation merges them
+// anyway, and a neighbourhood of copies of one point crashes CGAL 5.5's jet fit); the order of
+// the points is then the lexicographic one. `neighbors` 0 chooses k from the data. Fewer than
+// 16 distinct points, or points that span no tetrahedron, are left as they are: a quadric needs
+// more neighbours than that to average anything, and a plane or a line has no jet. A point that
+// a fit would send to a non-finite position stays where it was.
 template <class Point>
 Noise_smoothing_result smooth_noisy_points(std::vector<Point>& points, std::size_t neighbors, unsigned threads)
 {
@@ -72,8 +87,10 @@ Noise_smoothing_result smooth_noisy_points(std::vector<Point>& points, std::size
   if(neighbors > 0 && neighbors < 8) // a quadric has 6 coefficients: a fit needs more neighbours
     throw Input_error(Input_error_code::INVALID_PARAMETER,
                       "smoothing_neighbors must be 0 (chosen from the points) or at least 8, not " + std::to_string(neighbors));
-  if(points.size() < 16) return result;
 #if defined(CGAL_EIGEN3_ENABLED)
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if(points.size() < 16 || !spans_a_tetrahedron(points)) return result;
   result.average_spacing = CGAL::compute_average_spacing<CGAL::Sequential_tag>(points, 6);
   result.neighbors = neighbors > 0 ? neighbors
                                    : (std::max)(minimum_smoothing_neighbors,
@@ -89,6 +106,9 @@ Noise_smoothing_result smooth_noisy_points(std::vector<Point>& points, std::size
 #endif
       CGAL::jet_smooth_point_set<CGAL::Sequential_tag>(points, unsigned(result.neighbors));
     ++result.passes;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(!(std::isfinite(points[i].x()) && std::isfinite(points[i].y()) && std::isfinite(points[i].z())))
+        points[i] = before[i];
     const double moved = median_displacement(before, points);
     if(pass == 0) {
       result.noise_estimate = moved;
