@@ -161,6 +161,10 @@ string(JSON scale GET "${json}" scale)
 if(NOT rc EQUAL 0 OR NOT scale EQUAL 48)
   message(FATAL_ERROR "oni --robust --smoothing-neighbors 48: exit code ${rc}, ${json}")
 endif()
+# blobby.xyz smoothed: two pockets (8.3 and 4.3), the first above 4 but not standing out
+expect_failure_because(blobby_robust "does not stand out" closed "${DATA}/points_3/blobby.xyz" --robust)
+expect_failure_because(interior_outside_smoothed "as the robust mode smoothed them" closed "${DATA}/points_3/blobby.xyz"
+                       --robust --interior 0.1,0,0)
 expect_failure(neighbors_without_robust closed "${DATA}/points_3/oni.ply" --smoothing-neighbors 30)
 expect_failure(neighbors_too_few closed "${DATA}/points_3/oni.ply" --robust --smoothing-neighbors 3)
 # bad option values and a missing output directory: the same one-line contract

@@ -33,11 +33,12 @@ namespace CGAL {
 namespace Lex_optimal_chains {
 namespace internal {
 
-// Cells (by position in the cell container) that hold the constraint points.
+// Cells (by position in the cell container) that hold the constraint points. `smoothed`: the
+// triangulation is of the points smoothed by the robust mode, whose hull is smaller.
 template <class Triangulation, class PointRange>
 std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
                                             const Handle_index_map<typename Triangulation::Cell>& positions,
-                                            const PointRange& points, bool interior)
+                                            const PointRange& points, bool interior, bool smoothed = false)
 {
   std::vector<std::uint32_t> cells;
   for(const auto& p : points) {
@@ -62,6 +63,7 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
       if(interior && dt.is_infinite(ic)) {
         std::ostringstream msg;
         msg << "interior point (" << p << ") is not inside the convex hull of the points";
+        if(smoothed) msg << " as the robust mode smoothed them";
         throw Input_error(Input_error_code::CONSTRAINT_OUTSIDE_HULL, msg.str());
       }
       cells.push_back(positions.index(&*ic));
@@ -78,16 +80,15 @@ std::vector<std::uint32_t> constraint_cells(const Triangulation& dt,
 // as long), which noisy or unevenly sampled closed surfaces pass with interiors of low
 // persistence while a partial scan has no such void. Without the robust mode, a ratio of 4 is
 // also enough, as it was before the rule (several closed surfaces give several long bars).
-// In the robust mode it is not: smoothing very noisy points can make pockets of similar
-// persistence, one of which would be taken for the interior.
+// When the robust mode smoothed the points it is not: smoothing very noisy points can make
+// pockets of similar persistence, one of which would be taken for the interior.
 template <class NamedParameters>
-void check_automatic_interior(const Automatic_interior& a, const NamedParameters& np)
+void check_automatic_interior(const Automatic_interior& a, const NamedParameters& np, bool robust)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   constexpr bool adaptive =
     parameters::is_default_parameter<NamedParameters, Lex_optimal_chains::internal_np::minimum_interior_persistence_t>::value;
-  const bool robust = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::robust), false);
   const double minimum = choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::minimum_interior_persistence), 4.0);
   const bool stands_out = a.persistence >= 2 && a.persistence >= a.runner_up_persistence * a.runner_up_persistence;
   if(adaptive ? stands_out || (!robust && a.persistence >= minimum) : a.persistence >= minimum) return;
@@ -146,7 +147,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
   // copyable parameters by value
   const std::vector<Point> no_points;
   std::vector<std::uint32_t> sources = constraint_cells(
-    dt, cells, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::interior_points), no_points), true);
+    dt, cells, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::interior_points), no_points), true, report.robust);
   std::vector<std::uint32_t> sinks = constraint_cells(
     dt, cells, choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::exterior_points), no_points), false);
   sinks.insert(sinks.end(), infinite.begin(), infinite.end());
@@ -181,7 +182,7 @@ closed_surface_facets(const Triangulation& dt, const NamedParameters& np,
     report.automatic_interior = true;
     report.interior_persistence = a.persistence;
     report.runner_up_persistence = a.runner_up_persistence;
-    check_automatic_interior(a, np);
+    check_automatic_interior(a, np, report.robust); // robust: the points were smoothed
     if(verbose)
       std::cerr << "Lex_optimal_chains: automatic interior cell, persistence " << a.persistence << ", in "
                 << watch.elapsed() << " s (" << spanning_tree.size() << " tree facets between components)\n";
