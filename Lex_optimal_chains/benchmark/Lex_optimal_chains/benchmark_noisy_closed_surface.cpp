@@ -59,8 +59,10 @@ std::optional<Input> scan(const std::string& data, const std::string& file, bool
                               .normal_map(CGAL::Second_of_pair_property_map<Point_with_normal>())))
     return std::nullopt;
   for(const auto& p : in.points) in.has_normals |= p.second != CGAL::NULL_VECTOR;
-  if(unit_sphere) in.true_area = 4 * 3.14159265358979323846;
-  if(unit_sphere) in.truth = [](const Point& p) { return std::abs(std::sqrt((p - CGAL::ORIGIN).squared_length()) - 1); };
+  if(unit_sphere) {
+    in.true_area = 4 * 3.14159265358979323846;
+    in.truth = [](const Point& p) { return std::abs(std::sqrt((p - CGAL::ORIGIN).squared_length()) - 1); };
+  }
   return in;
 }
 
@@ -77,27 +79,29 @@ Mesh advancing_front(const std::vector<Point>& points)
   return mesh;
 }
 
-void row(const Input& in, const std::string& method, double seconds, double delaunay_seconds, const Mesh* mesh,
-         const std::vector<Point>& points, double diagonal, double& poisson_distance, const std::string& note = "")
+// Prints one row; returns the points' mean distance to the mesh in % of the diagonal (0 when
+// refused). `reference`: Poisson's, for the last ratio (0: this row is Poisson's, ratio 1).
+double row(const Input& in, const std::string& method, double seconds, double delaunay_seconds, const Mesh* mesh,
+           const std::vector<Point>& points, double diagonal, double reference, const std::string& note = "")
 {
   std::printf("| %-24s | %-22s | %7.3f | %5.2f |", in.name.c_str(), method.c_str(), seconds, seconds / delaunay_seconds);
   if(!mesh || num_faces(*mesh) == 0) {
     std::printf(" refused: %s |\n", note.c_str());
-    return;
+    return 0;
   }
   std::vector<std::size_t> component(num_faces(*mesh));
   const std::size_t components = PMP::connected_components(
     *mesh, CGAL::make_property_map(component));
   const double area = PMP::area(*mesh);
   const double distance = mean_distance_to_mesh(points, *mesh) / diagonal * 100;
-  if(method == "Poisson") poisson_distance = distance;
   std::printf(" %6zu | %-3s | %2zu | %7.3f", std::size_t(num_faces(*mesh)), CGAL::is_closed(*mesh) ? "yes" : "no", components, area);
   if(in.true_area > 0) std::printf(" (%+5.1f%%)", 100 * (area / in.true_area - 1));
   else std::printf("          ");
   if(in.truth) std::printf(" | %8.5f", area_weighted_mean_distance(*mesh, in.truth));
   else std::printf(" |        -");
-  std::printf(" | %6.3f | %5.2f | %s\n", distance, poisson_distance > 0 ? distance / poisson_distance : 0.0, note.c_str());
+  std::printf(" | %6.3f | %5.2f | %s\n", distance, reference > 0 ? distance / reference : 1.0, note.c_str());
   std::fflush(stdout);
+  return distance;
 }
 
 void measure(const Input& in)
@@ -113,18 +117,16 @@ void measure(const Input& in)
   { CGAL::Delaunay_triangulation_3<K> dt(points.begin(), points.end()); }
   t.stop();
   const double dt_seconds = t.time();
-  double poisson_distance = 0;
   // Poisson first: the ratios of the last column are to it
   t.reset(); t.start();
   Mesh peer = poisson(in.points, false);
   t.stop();
-  row(in, "Poisson", t.time(), dt_seconds, &peer, points, diagonal, poisson_distance);
+  const double poisson_distance = row(in, "Poisson", t.time(), dt_seconds, &peer, points, diagonal, 0);
   if(in.has_normals) {
     t.reset(); t.start();
     Mesh with_normals = poisson(in.points, true);
     t.stop();
-    double reference = poisson_distance; // not replaced by this row
-    row(in, "Poisson, file normals", t.time(), dt_seconds, &with_normals, points, diagonal, reference);
+    row(in, "Poisson, file normals", t.time(), dt_seconds, &with_normals, points, diagonal, poisson_distance);
   }
   t.reset(); t.start();
   Mesh afsr = advancing_front(points);

@@ -71,8 +71,8 @@ swapped when `i` is odd, is oriented outward.
     \cgalParamDescription{the automatic interior is refused below this persistence ratio}
     \cgalParamType{`double`}
     \cgalParamDefault{none: the interior is accepted when it stands out from the other voids (a ratio of at
-                      least 2 and at least the square of the second largest ratio), or, unless `robust`,
-                      from a ratio of 4}
+                      least 2 and at least the square of the second largest ratio), or from a ratio of 4
+                      unless the points were smoothed (`robust` of the reconstruction)}
   \cgalParamNEnd
   \cgalParamNBegin{callback}
     \cgalParamDescription{called with the progress in [0,1]; returning `false` cancels (the last
