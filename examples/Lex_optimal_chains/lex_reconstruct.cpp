@@ -7,11 +7,15 @@
 //                   [--coefficients z2|q] [--remove-blocking-points]
 //                   [--drop-boundary-triangles | --keep-boundary-triangles] [--keep-non-manifold]
 //                   [--threads N] [--ascii] [--json]
+//   lex_reconstruct tiles INPUT OUTPUT_DIR --tile-size S [--seam-spacing V] [--merged FILE]
+//                   [--coefficients z2|q] [--keep-non-manifold] [--threads N] [--ascii] [--json]
 //
 // INPUT: points as XYZ, PLY or OFF. OUTPUT: a mesh as OFF, PLY (binary unless --ascii) or
 // OBJ, by extension.
 // Boundary FILE: CGAL's polylines text format, one closed polyline per line:
 // "n x1 y1 z1 ... xn yn zn" with the last point equal to the first.
+// tiles: one mesh per tile in OUTPUT_DIR (created if missing), tile_C_R.ply for the tile of
+// column C and row R, and with --merged their union, welded at the seams.
 // On error: a one-line reason on stderr, exit code 1, and no output file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -20,6 +24,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/lex_optimal_open_surface.h>
+#include <CGAL/lex_optimal_tiled_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 #include <CGAL/Lex_optimal_chains/IO/input_files.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -210,7 +215,7 @@ static void add_output_options(CLI::App* command, Output_options& options)
   command->add_flag("--keep-non-manifold", options.keep_non_manifold,
                     "keep the optimal chain as it is: its non-manifold vertices and edges are split in the mesh "
                     "instead of resolved by local changes of the chain");
-  command->add_option("--threads", options.threads, "threads for the Delaunay triangulation")->check(CLI::Range(1u, 1024u));
+  command->add_option("--threads", options.threads, "threads for the Delaunay triangulation (tiles: tiles reconstructed at once)")->check(CLI::Range(1u, 1024u));
   command->add_flag("--ascii", options.ascii, "write a .ply mesh as text (binary by default)");
   command->add_flag("--json", options.json, "print one JSON line of statistics on stdout");
 }
@@ -363,6 +368,113 @@ static int run_open(const std::string& input, const std::string& output, const s
   return 0;
 }
 
+// What the tiles subcommand takes besides the output options.
+struct Tiles_options
+{
+  double tile_size = 0, seam_spacing = 0;
+  std::string merged, coefficients = "q";
+};
+
+static int run_tiles(const std::string& input, const std::string& directory, const Tiles_options& t,
+                     const Output_options& options)
+{
+  if(t.coefficients != "z2" && t.coefficients != "q")
+    throw std::invalid_argument("--coefficients must be z2 or q, not '" + t.coefficients + "'");
+  // the directory: an existing one, or one created after the work in an existing directory;
+  // checked writable before the work
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const bool exists = fs::exists(directory, error);
+  if(exists && !fs::is_directory(directory, error)) throw std::runtime_error("'" + directory + "' is not a directory");
+  const fs::path parent = exists ? fs::path(directory) : fs::absolute(fs::path(directory), error).parent_path();
+  if(!fs::is_directory(parent, error))
+    throw std::runtime_error("cannot create the tile directory '" + directory + "': no directory " + parent.string());
+  { // writable? (Output_file throws if not)
+    Output_file probe((parent / ".lex_reconstruct_probe.ply").string());
+  }
+  std::unique_ptr<Output_file> merged_file;
+  if(!t.merged.empty()) merged_file.reset(new Output_file(t.merged));
+  const auto tile_path = [&](std::size_t c, std::size_t r) {
+    return (fs::path(directory) / ("tile_" + std::to_string(c) + "_" + std::to_string(r) + ".ply")).string();
+  };
+  const std::vector<Point> points = LOC::IO::read_point_file<Point>(input);
+  const LOC::Coefficient_field field = t.coefficients == "z2" ? LOC::Coefficient_field::Z2 : LOC::Coefficient_field::Q;
+  std::vector<Mesh> tiles;
+  const LOC::Tiled_surface_report r = CGAL::lex_optimal_tiled_surface_reconstruction(
+    points, t.tile_size, tiles,
+    LOC::parameters::seam_spacing(t.seam_spacing,
+    LOC::parameters::coefficient_field(field,
+    LOC::parameters::keep_non_manifold(options.keep_non_manifold,
+    LOC::parameters::number_of_threads(options.threads)))));
+  CGAL::Real_timer io;
+  io.start();
+  if(!exists && !fs::create_directory(directory, error))
+    throw std::runtime_error("cannot create the tile directory '" + directory + "' (" + error.message() + ")");
+  // on an error while writing, the tiles written before are removed: none is left
+  std::vector<std::string> written;
+  try {
+    for(std::size_t i = 0; i < tiles.size(); ++i) {
+      const std::string path = tile_path(r.tiles[i].column, r.tiles[i].row);
+      Output_file(path).write(tiles[i], options.ascii);
+      written.push_back(path);
+    }
+  } catch(...) {
+    for(const std::string& path : written) fs::remove(path, error);
+    throw;
+  }
+  io.stop();
+  Mesh merged;
+  LOC::Tile_merge_report m;
+  if(merged_file) {
+    m = LOC::merge_tile_meshes(tiles, merged, field);
+    io.start();
+    merged_file->write(merged, options.ascii);
+    io.stop();
+  }
+  if(options.json) {
+    nlohmann::json j;
+    j["input"] = input;
+    j["output"] = directory;
+    j["points"] = r.number_of_input_points;
+    j["tiles"] = r.tiles.size();
+    j["columns"] = r.columns;
+    j["rows"] = r.rows;
+    j["tile_width"] = r.tile_width;
+    j["tile_height"] = r.tile_height;
+    j["seam_spacing"] = r.seam_spacing;
+    j["seam_points"] = r.number_of_seam_points;
+    j["threads"] = r.number_of_threads;
+    j["seam_s"] = r.seam_seconds;
+    j["tiles_s"] = r.tiles_seconds;
+    j["merge_s"] = m.seconds;
+    j["write_s"] = io.time();
+    j["total_s"] = r.total_seconds + m.seconds + io.time();
+    j["peak_rss_mb"] = peak_rss_mb();
+    nlohmann::json per_tile = nlohmann::json::array();
+    for(const LOC::Tile_report& tile : r.tiles)
+      per_tile.push_back({{"column", tile.column}, {"row", tile.row}, {"points", tile.number_of_points},
+                          {"cycle_vertices", tile.number_of_cycle_vertices}, {"removed_points", tile.number_of_removed_points},
+                          {"vertices", tile.mesh_vertices}, {"faces", tile.mesh_faces}, {"seconds", tile.seconds}});
+    j["per_tile"] = per_tile;
+    if(merged_file) {
+      j["merged"] = t.merged;
+      nlohmann::json mj;
+      add_mesh_statistics(mj, merged);
+      mj["cancelled_faces"] = m.cancelled_faces;
+      mj["non_manifold_vertices"] = m.non_manifold_vertices;
+      mj["non_manifold_edges"] = m.non_manifold_edges;
+      j["merged_mesh"] = mj;
+    }
+    std::cout << j.dump() << std::endl;
+  } else {
+    std::cerr << "wrote " << r.tiles.size() << " tiles (" << r.columns << " x " << r.rows << ") in " << directory;
+    if(merged_file)
+      std::cerr << " and " << t.merged << ": " << m.mesh_vertices << " vertices, " << m.mesh_faces << " faces";
+    std::cerr << "\n";
+  }
+  return 0;
+}
+
 int main(int argc, char** argv)
 {
   CLI::App app{"Surface reconstruction as a lexicographic optimal chain (Lex_optimal_chains)"};
@@ -409,6 +521,17 @@ int main(int argc, char** argv)
   auto* k = open->add_flag("--keep-boundary-triangles", keep, "keep them with --auto-boundary");
   d->excludes(k);
   add_output_options(open, options);
+
+  Tiles_options tiles_options;
+  CLI::App* tiles = app.add_subcommand("tiles", "a terrain-like cloud in tiles whose meshes meet exactly at their seams");
+  tiles->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
+  tiles->add_option("OUTPUT_DIR", output, "directory of the tile meshes tile_C_R.ply (created if missing)")->required();
+  tiles->add_option("--tile-size", tiles_options.tile_size, "largest side of a tile, in the units of the points")->required();
+  tiles->add_option("--seam-spacing", tiles_options.seam_spacing,
+                    "distance between seam points (default: 3 times the mean spacing of the points)");
+  tiles->add_option("--merged", tiles_options.merged, "also write the union of the tiles, welded at the seams (.off, .ply or .obj)");
+  tiles->add_option("--coefficients", tiles_options.coefficients, "z2 (unoriented) or q (oriented upwards, default)");
+  add_output_options(tiles, options);
   try {
     app.parse(argc, argv);
     if(open->parsed() && boundary_file.empty() && !auto_boundary)
@@ -423,6 +546,7 @@ int main(int argc, char** argv)
   }
   try {
     if(closed->parsed()) return run_closed(input, output, closed_options, options);
+    if(tiles->parsed()) return run_tiles(input, output, tiles_options, options);
     return run_open(input, output, boundary_file, auto_boundary, coefficients, remove_blocking, drop, keep, options);
   } catch(const std::exception& e) {
     std::cerr << "lex_reconstruct: error: " << e.what() << std::endl;

@@ -27,6 +27,7 @@ enum drop_boundary_triangles_t { drop_boundary_triangles };
 enum keep_non_manifold_t { keep_non_manifold };
 enum robust_t { robust };
 enum smoothing_neighbors_t { smoothing_neighbors };
+enum seam_spacing_t { seam_spacing };
 
 } // namespace internal_np
 
@@ -72,6 +73,8 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(keep_non_manifold)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(robust)
 /// Number of neighbours of the jet fits of the robust mode (0: chosen from the data).
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(smoothing_neighbors)
+/// Distance between consecutive seam points of the tiles of `lex_optimal_tiled_surface_reconstruction()` (0: chosen from the data).
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(seam_spacing)
 
 #undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
 

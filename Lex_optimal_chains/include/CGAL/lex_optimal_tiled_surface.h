@@ -1,0 +1,308 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_TILED_SURFACE_H
+#define CGAL_LEX_OPTIMAL_TILED_SURFACE_H
+
+#include <CGAL/license/Lex_optimal_chains.h>
+
+#include <CGAL/lex_optimal_open_surface.h>
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Tiled_surface_report.h>
+#include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
+#include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
+#include <CGAL/Lex_optimal_chains/internal/Optimal_chain_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
+#include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
+#include <CGAL/Lex_optimal_chains/internal/Tile_seams_3.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Reconstructs a terrain-like cloud (aerial LiDAR of a city, a digital surface model) tile by
+tile, so that the meshes of neighbouring tiles coincide exactly at their common border (the
+scheme of Fig. 4.27 of the thesis, made automatic; see the user manual, section "Tiles").
+
+The bounding rectangle of the points in the \f$xy\f$-plane is cut into columns \f$\times\f$
+rows tiles of equal size, at most `tile_size` on a side. Between neighbouring tiles runs a
+seam, a polyline of input points: at each inner corner of the grid the point nearest to it,
+and along each border, in each slice of about `seam_spacing`, the point nearest to the slice's
+centre within half the spacing of the border. Around the whole cloud runs a frame, a
+rectangle just outside it. Each tile is then an open surface
+(`lex_optimal_open_surface_reconstruction()` with `remove_blocking_points` and
+`drop_boundary_triangles`) of the points of its region and of its seam points, bounded by its
+seams and the frame. Two tiles that share a seam have it as a border of both meshes, with the
+same vertices: `Lex_optimal_chains::merge_tile_meshes()` welds them into one mesh without
+cracks. The tiles are independent once the seams are known: they are reconstructed in
+parallel, and the result does not depend on the number of threads nor on the order of the
+points.
+
+\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+\tparam PolygonMesh a model of `MutableFaceGraph` whose points are of the type of the input points
+
+\param points the input points (duplicates are merged); not modified
+\param tile_size the largest side of a tile, in the units of the points; positive, at most
+       the larger side of the bounding rectangle of the points (one tile is the untiled surface:
+       call `lex_optimal_open_surface_reconstruction()` instead)
+\param tile_meshes receives one mesh per tile, row after row (tile `(column, row)` at
+       `column + columns * row`); on success only
+\param np optional named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map giving the point of an element of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` with value type a `Point_3` with `double` coordinates}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{seam_spacing}
+    \cgalParamDescription{the distance between consecutive seam points, and the width of the
+                          band around a border where they are taken; positive, at most a
+                          quarter of the side of a tile}
+    \cgalParamType{`double`}
+    \cgalParamDefault{3 times the mean spacing of the points in the \f$xy\f$-plane (the side of
+                      the bounding rectangle's area shared among the points), at most a quarter
+                      of the side of a tile}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{tiles reconstructed at once (needs TBB); the result does not depend on it}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{coefficient_field}
+    \cgalParamDescription{the coefficients of the chains of the tiles (see `lex_optimal_open_surface_reconstruction()`)}
+    \cgalParamType{`Lex_optimal_chains::Coefficient_field`}
+    \cgalParamDefault{`Lex_optimal_chains::Coefficient_field::Z2`}
+  \cgalParamNEnd
+  \cgalParamNBegin{keep_non_manifold}
+    \cgalParamDescription{as in `lex_optimal_open_surface_reconstruction()`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\return what was done, tile by tile
+
+\throws Lex_optimal_chains::Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`,
+`TOO_FEW_POINTS`, `INVALID_PARAMETER` (a tile size that is not positive or gives one tile, a
+seam spacing out of its range, a tile corner with no input point near it: the seams run
+through the points), or the error of the first tile (in the order of the tiles) that cannot
+be reconstructed, its tile named in the message. `tile_meshes` is then unchanged.
+*/
+template <class PointRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Tiled_surface_report
+lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_size,
+                                         std::vector<PolygonMesh>& tile_meshes,
+                                         const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace LOC = Lex_optimal_chains;
+  using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
+  using Point = typename boost::property_traits<Point_map>::value_type;
+  const Point_map point_map = choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map));
+  const unsigned threads = choose_parameter(get_parameter(np, LOC::internal_np::number_of_threads), 1u);
+  const LOC::Coefficient_field field = LOC::internal::coefficient_field_of(np);
+  const bool keep = choose_parameter(get_parameter(np, LOC::internal_np::keep_non_manifold), false);
+
+  LOC::Tiled_surface_report report;
+  LOC::internal::Stopwatch total, watch;
+  std::vector<Point> pts = LOC::internal::finite_points<Point>(points, point_map);
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  report.number_of_input_points = pts.size();
+  if(pts.size() < 4) throw LOC::Input_error(LOC::Input_error_code::TOO_FEW_POINTS, "fewer than 4 distinct points");
+
+  const Bbox_3 box = bbox_3(pts.begin(), pts.end());
+  const double width = box.xmax() - box.xmin(), height = box.ymax() - box.ymin();
+  if(!(tile_size > 0) || !std::isfinite(tile_size))
+    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                           "the tile size must be positive and finite (it is " + std::to_string(tile_size) + ")");
+  if(!(tile_size < std::max(width, height)))
+    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                           "the tile size " + std::to_string(tile_size) + " is not smaller than the cloud (" +
+                             std::to_string(width) + " x " + std::to_string(height) +
+                             "): one tile is the untiled surface (lex_optimal_open_surface_reconstruction)");
+  const double tile_width = width / std::ceil(width / tile_size), tile_height = height / std::ceil(height / tile_size);
+  // the sides of the tiles along the axes that are cut: at least 4 seam spacings
+  const double smallest_side = std::min(width > tile_size ? tile_width : HUGE_VAL, height > tile_size ? tile_height : HUGE_VAL);
+  double spacing = choose_parameter(get_parameter(np, LOC::internal_np::seam_spacing), 0.);
+  if(spacing == 0) spacing = std::min(3 * std::sqrt(std::max(width, 1e-300) * std::max(height, 1e-300) / double(pts.size())),
+                                      smallest_side / 4);
+  if(!(spacing > 0) || !(spacing <= smallest_side / 4))
+    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                           "the seam spacing " + std::to_string(spacing) + " must be positive and at most a quarter of the side of a tile (" +
+                             std::to_string(smallest_side) + ")");
+  report.tile_width = tile_width;
+  report.tile_height = tile_height;
+  report.seam_spacing = spacing;
+
+  // the seams, and the points of each tile (its region's, then its cycle's seam points)
+  const LOC::internal::Tile_seams_3<Point> seams(pts, tile_size, spacing);
+  report.columns = seams.columns();
+  report.rows = seams.rows();
+  report.number_of_seam_points = seams.seam_points().size();
+  std::vector<std::vector<Point>> tile_points(seams.number_of_tiles());
+  for(const Point& p : pts)
+    if(!seams.is_seam_point(p)) tile_points[seams.tile_of(p)].push_back(p);
+  std::vector<Point>().swap(pts);
+  std::vector<std::vector<Point>> cycles(seams.number_of_tiles());
+  for(std::size_t t = 0; t < cycles.size(); ++t) {
+    cycles[t] = seams.cycle(t % seams.columns(), t / seams.columns());
+    for(std::size_t k = 0; k + 1 < cycles[t].size(); ++k)
+      if(seams.is_seam_point(cycles[t][k])) tile_points[t].push_back(cycles[t][k]);
+  }
+  report.seam_seconds = watch.lap();
+
+  // the tiles, independently (each on one thread); the first error in the order of the tiles wins
+  std::vector<PolygonMesh> meshes(seams.number_of_tiles());
+  std::vector<LOC::Tile_report> tiles(seams.number_of_tiles());
+  std::vector<std::exception_ptr> errors(seams.number_of_tiles());
+  LOC::internal::Parallel_blocks parallel(threads, 2);
+  report.number_of_threads = parallel.is_parallel(meshes.size()) ? threads : 1;
+  parallel.run(0, meshes.size(), 1, meshes.size(), [&](std::size_t t, std::size_t, std::size_t) {
+    LOC::internal::Stopwatch tile_watch;
+    LOC::Tile_report& r = tiles[t];
+    r.column = t % seams.columns();
+    r.row = t / seams.columns();
+    r.number_of_points = tile_points[t].size();
+    r.number_of_cycle_vertices = cycles[t].size() - 1;
+    try {
+      const auto open = lex_optimal_open_surface_reconstruction(
+        tile_points[t], std::vector<std::vector<Point>>{cycles[t]}, meshes[t],
+        LOC::parameters::remove_blocking_points(
+          true, LOC::parameters::drop_boundary_triangles(
+                  true, LOC::parameters::coefficient_field(field, LOC::parameters::keep_non_manifold(keep)))));
+      r.number_of_removed_points = open.number_of_removed_points;
+      r.mesh_vertices = open.mesh_vertices;
+      r.mesh_faces = open.mesh_faces;
+    } catch(...) {
+      errors[t] = std::current_exception();
+    }
+    std::vector<Point>().swap(tile_points[t]);
+    r.seconds = tile_watch.lap();
+  });
+  for(std::size_t t = 0; t < errors.size(); ++t) {
+    if(!errors[t]) continue;
+    const std::string where = "tile (" + std::to_string(t % seams.columns()) + ", " + std::to_string(t / seams.columns()) + "): ";
+    try {
+      std::rethrow_exception(errors[t]);
+    } catch(const LOC::Input_error& e) {
+      throw LOC::Input_error(e.code(), where + e.what());
+    }
+  }
+  report.tiles_seconds = watch.lap();
+  report.tiles = std::move(tiles);
+  tile_meshes = std::move(meshes);
+  report.total_seconds = total.lap();
+  return report;
+}
+
+namespace Lex_optimal_chains {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Welds the meshes of `lex_optimal_tiled_surface_reconstruction()` into one: vertices at the
+same point become one (the seam points, which both tiles of a seam share), two faces on the
+same three points cancel out (the union is the sum of the chains of the tiles: where a seam
+makes a narrow excursion, up a wall and down again, both tiles span it), and the result is
+made a valid polygon mesh as the meshes of the tiles are (an edge of more than two faces is
+cut, a vertex gets one copy per umbrella; over Z2 the faces are oriented by a traversal,
+over Q they keep their orientation, which is that of the counterclockwise cycles of the tiles,
+upwards). The faces must be triangles.
+
+\param tile_meshes the meshes of the tiles
+\param merged receives the union (it is cleared first)
+\param field the coefficient field the tiles were reconstructed with
+\return what was done
+*/
+template <class PolygonMesh>
+Tile_merge_report merge_tile_meshes(const std::vector<PolygonMesh>& tile_meshes, PolygonMesh& merged,
+                                    Coefficient_field field = Coefficient_field::Z2)
+{
+  using Point = typename boost::property_traits<typename boost::property_map<PolygonMesh, vertex_point_t>::const_type>::value_type;
+  internal::Stopwatch watch;
+  Tile_merge_report report;
+  std::vector<Point> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for(const PolygonMesh& m : tile_meshes) {
+    const auto vpm = get(vertex_point, m);
+    for(auto f : faces(m)) {
+      std::array<std::uint32_t, 3> t;
+      int k = 0;
+      for(auto h : halfedges_around_face(halfedge(f, m), m)) {
+        if(k == 3) throw Input_error(Input_error_code::INVALID_PARAMETER, "a face of a tile mesh is not a triangle");
+        t[k++] = std::uint32_t(points.size());
+        points.push_back(get(vpm, target(h, m)));
+      }
+      if(k != 3) throw Input_error(Input_error_code::INVALID_PARAMETER, "a face of a tile mesh is not a triangle");
+      triangles.push_back(t);
+    }
+  }
+  // one index per distinct point
+  std::vector<std::uint32_t> order(points.size());
+  for(std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points[a] < points[b]; });
+  std::vector<std::uint32_t> index(points.size());
+  std::vector<Point> distinct;
+  for(std::size_t i = 0; i < order.size(); ++i) {
+    if(i == 0 || points[order[i]] != points[order[i - 1]]) distinct.push_back(points[order[i]]);
+    index[order[i]] = std::uint32_t(distinct.size() - 1);
+  }
+  for(auto& t : triangles)
+    for(auto& v : t) v = index[v];
+  // The union is the sum of the chains of the tiles: a triangle that two tiles both have (where
+  // a seam makes a narrow excursion, up a wall and down again, both tiles span it, each with the
+  // orientation of its own cycle) cancels out, as the seam itself does.
+  {
+    std::vector<std::uint32_t> by_vertices(triangles.size());
+    for(std::uint32_t i = 0; i < by_vertices.size(); ++i) by_vertices[i] = i;
+    auto key = [&](std::uint32_t i) {
+      std::array<std::uint32_t, 3> k = triangles[i];
+      std::sort(k.begin(), k.end());
+      return k;
+    };
+    std::sort(by_vertices.begin(), by_vertices.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return std::make_pair(key(a), a) < std::make_pair(key(b), b);
+    });
+    std::vector<bool> kept(triangles.size(), true);
+    for(std::size_t i = 0, j; i < by_vertices.size(); i = j) {
+      for(j = i + 1; j < by_vertices.size() && key(by_vertices[j]) == key(by_vertices[i]); ++j) {}
+      // pairs cancel: an odd count leaves the first one
+      for(std::size_t k = (j - i) % 2; k < j - i; ++k) kept[by_vertices[i + k]] = false;
+    }
+    std::size_t n = 0;
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+      if(kept[i]) triangles[n++] = triangles[i];
+    report.cancelled_faces = triangles.size() - n;
+    triangles.resize(n);
+  }
+  clear(merged);
+  const internal::Chain_soup_statistics stats = internal::add_chain_soup(distinct, triangles, field == Coefficient_field::Q, merged);
+  report.mesh_vertices = num_vertices(merged);
+  report.mesh_faces = num_faces(merged);
+  report.non_manifold_vertices = stats.vertex_copies;
+  report.non_manifold_edges = stats.non_manifold_edges;
+  report.orientation_cuts = stats.orientation_cuts;
+  report.seconds = watch.lap();
+  return report;
+}
+
+} // namespace Lex_optimal_chains
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_TILED_SURFACE_H
