@@ -427,6 +427,7 @@ static int run_tiles(const std::string& input, const std::string& directory, con
   LOC::Tile_merge_report m;
   if(merged_file) {
     m = LOC::merge_tile_meshes(tiles, merged, field);
+    merged.collect_garbage(); // the closed pockets removed: the writer numbers the vertices left
     io.start();
     merged_file->write(merged, options.ascii);
     io.stop();
@@ -461,6 +462,7 @@ static int run_tiles(const std::string& input, const std::string& directory, con
       nlohmann::json mj;
       add_mesh_statistics(mj, merged);
       mj["cancelled_faces"] = m.cancelled_faces;
+      mj["removed_closed_components"] = m.removed_closed_components;
       mj["non_manifold_vertices"] = m.non_manifold_vertices;
       mj["non_manifold_edges"] = m.non_manifold_edges;
       j["merged_mesh"] = mj;

@@ -18,6 +18,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Tile_seams_3.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
@@ -219,14 +220,17 @@ namespace Lex_optimal_chains {
 Welds the meshes of `lex_optimal_tiled_surface_reconstruction()` into one: vertices at the
 same point become one (the seam points, which both tiles of a seam share), two faces on the
 same three points cancel out (the union is the sum of the chains of the tiles: where a seam
-makes a narrow excursion, up a wall and down again, both tiles span it), and the result is
+makes a narrow excursion, up a wall and down again, both tiles span it; where they span it with
+different triangles, their sum is a closed pocket, and closed components are removed), and the
+result is
 made a valid polygon mesh as the meshes of the tiles are (an edge of more than two faces is
 cut, a vertex gets one copy per umbrella; over Z2 the faces are oriented by a traversal,
 over Q they keep their orientation, which is that of the counterclockwise cycles of the tiles,
 upwards). The faces must be triangles.
 
 \param tile_meshes the meshes of the tiles
-\param merged receives the union (it is cleared first)
+\param merged receives the union (it is cleared first; with a `Surface_mesh`, the faces of the
+       closed components removed are garbage until `collect_garbage()`)
 \param field the coefficient field the tiles were reconstructed with
 \return what was done
 */
@@ -293,8 +297,29 @@ Tile_merge_report merge_tile_meshes(const std::vector<PolygonMesh>& tile_meshes,
   }
   clear(merged);
   const internal::Chain_soup_statistics stats = internal::add_chain_soup(distinct, triangles, field == Coefficient_field::Q, merged);
-  report.mesh_vertices = num_vertices(merged);
-  report.mesh_faces = num_faces(merged);
+  // Where a seam makes an excursion (up a wall and down again), both tiles may also span the
+  // narrow curtain under it, each with its own triangles: their sum is a closed pocket. A closed
+  // component has no boundary: without it the union has the same boundary and is smaller in
+  // the lexicographic order. Closed components are removed while one with a boundary is left.
+  {
+    auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), merged);
+    const std::size_t n = Polygon_mesh_processing::connected_components(merged, component);
+    std::vector<bool> bounded(n, false);
+    std::vector<std::size_t> size(n, 0);
+    for(auto h : halfedges(merged))
+      if(is_border(h, merged)) bounded[get(component, face(opposite(h, merged), merged))] = true;
+    for(auto f : faces(merged)) ++size[get(component, f)];
+    std::vector<std::size_t> closed;
+    for(std::size_t c = 0; c < n; ++c)
+      if(!bounded[c]) closed.push_back(c);
+    if(closed.size() < n && !closed.empty()) {
+      Polygon_mesh_processing::remove_connected_components(merged, closed, component);
+      report.removed_closed_components = closed.size();
+      for(std::size_t c : closed) report.removed_closed_faces += size[c];
+    }
+  }
+  report.mesh_vertices = std::size_t(std::distance(vertices(merged).begin(), vertices(merged).end()));
+  report.mesh_faces = std::size_t(std::distance(faces(merged).begin(), faces(merged).end()));
   report.non_manifold_vertices = stats.vertex_copies;
   report.non_manifold_edges = stats.non_manifold_edges;
   report.orientation_cuts = stats.orientation_cuts;

@@ -57,6 +57,8 @@ struct Tile_merge_report
   std::size_t mesh_vertices = 0;         ///< vertices of the merged mesh
   std::size_t mesh_faces = 0;            ///< faces of the merged mesh
   std::size_t cancelled_faces = 0;       ///< faces that two tiles both had, removed in pairs
+  std::size_t removed_closed_components = 0; ///< closed components (pockets under seam excursions) removed
+  std::size_t removed_closed_faces = 0;  ///< their faces
   std::size_t non_manifold_vertices = 0; ///< vertex copies added to separate umbrellas
   std::size_t non_manifold_edges = 0;    ///< edges of more than two faces, cut
   std::size_t orientation_cuts = 0;      ///< edges cut to orient the mesh (Z2)

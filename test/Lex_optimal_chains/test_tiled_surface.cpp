@@ -1,0 +1,226 @@
+// Tests of lex_optimal_tiled_surface_reconstruction() and merge_tile_meshes(): the tiles of a
+// synthetic terrain with buildings and of CGAL's aerial scan b9_training.ply meet exactly at
+// their seams (the union is one valid mesh with one boundary loop, every seam edge has a face
+// of each tile); away from the seams the tiles give the triangles of the untiled surface; the
+// result does not depend on the number of threads nor on the order of the points; bad input is
+// refused with its reason.
+//   test_tiled_surface [CGAL data directory]
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/read_points.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Random.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/lex_optimal_open_surface.h>
+#include <CGAL/lex_optimal_tiled_surface.h>
+
+#include "test_support.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace LOC = CGAL::Lex_optimal_chains;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Triangle = std::array<Point, 3>;
+
+// A terrain of side 100 (gentle hills) with flat-roofed buildings 6 to 15 high, sampled on a
+// jittered grid of step 0.8 from above (as aerial LiDAR is: the walls get a few points only).
+std::vector<Point> terrain_with_buildings(unsigned seed)
+{
+  CGAL::Random rng(seed);
+  struct Box { double x0, y0, x1, y1, h; };
+  std::vector<Box> boxes;
+  for(int i = 0; i < 12; ++i) {
+    const double x = rng.get_double(5, 85), y = rng.get_double(5, 85);
+    boxes.push_back({x, y, x + rng.get_double(6, 12), y + rng.get_double(6, 12), rng.get_double(6, 15)});
+  }
+  auto ground = [](double x, double y) { return 2 * std::sin(0.05 * x) * std::cos(0.04 * y) + 0.02 * x; };
+  std::vector<Point> points;
+  const double step = 0.8;
+  for(double x = 0; x <= 100; x += step)
+    for(double y = 0; y <= 100; y += step) {
+      const double px = x + rng.get_double(-0.3, 0.3) * step, py = y + rng.get_double(-0.3, 0.3) * step;
+      double z = ground(px, py);
+      for(const Box& b : boxes)
+        if(px > b.x0 && px < b.x1 && py > b.y0 && py < b.y1) z = std::max(z, ground(b.x0, b.y0) + b.h);
+      points.emplace_back(px, py, z + rng.get_double(-0.02, 0.02));
+    }
+  return points;
+}
+
+std::set<Triangle> triangles_of(const Mesh& mesh)
+{
+  std::set<Triangle> result;
+  for(auto f : mesh.faces()) {
+    Triangle t;
+    int k = 0;
+    for(auto v : mesh.vertices_around_face(mesh.halfedge(f))) t[k++] = mesh.point(v);
+    std::sort(t.begin(), t.end());
+    result.insert(t);
+  }
+  return result;
+}
+
+struct Topology { std::size_t components = 0, border_cycles = 0; };
+
+Topology topology(Mesh mesh)
+{
+  Topology t;
+  auto fcc = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
+  t.components = PMP::connected_components(mesh, fcc);
+  std::vector<Mesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  t.border_cycles = cycles.size();
+  return t;
+}
+
+// Tiles the points, merges the tiles and checks the union: valid, and (at the caller) one
+// component with one boundary loop, the outer one, so no crack along the seams.
+LOC::Tiled_surface_report check_seams(const std::vector<Point>& points, double tile_size, unsigned threads,
+                                      std::vector<Mesh>& tiles, Mesh& merged)
+{
+  const LOC::Tiled_surface_report r =
+    CGAL::lex_optimal_tiled_surface_reconstruction(points, tile_size, tiles, LOC::parameters::number_of_threads(threads));
+  std::cout << "  " << r.columns << " x " << r.rows << " tiles of " << r.tile_width << " x " << r.tile_height << ", "
+            << r.number_of_seam_points << " seam points (spacing " << r.seam_spacing << "), seams " << r.seam_seconds
+            << " s, tiles " << r.tiles_seconds << " s on " << r.number_of_threads << " thread(s)" << std::endl;
+  assert(tiles.size() == r.columns * r.rows && r.tiles.size() == tiles.size());
+  // the faces of each edge, per tile
+  std::map<std::pair<Point, Point>, std::map<std::size_t, int>> edge_faces;
+  for(std::size_t t = 0; t < tiles.size(); ++t) {
+    assert(tiles[t].number_of_faces() > 0 && tiles[t].is_valid());
+    for(auto h : tiles[t].halfedges())
+      if(!tiles[t].is_border(h))
+        ++edge_faces[std::minmax(tiles[t].point(tiles[t].source(h)), tiles[t].point(tiles[t].target(h)))][t];
+  }
+  std::size_t seam_edges = 0;
+  for(const auto& [edge, per_tile] : edge_faces) {
+    if(per_tile.size() < 2) continue;
+    ++seam_edges;
+    assert(per_tile.size() == 2);
+  }
+  const LOC::Tile_merge_report m = LOC::merge_tile_meshes(tiles, merged);
+  const Topology top = topology(merged);
+  std::cout << "  merged: " << m.mesh_vertices << " vertices, " << m.mesh_faces << " faces, " << seam_edges
+            << " seam edges, " << top.components << " component(s), " << top.border_cycles << " boundary loop(s), "
+            << m.non_manifold_vertices << " non-manifold vertices, " << m.cancelled_faces << " faces cancelled, "
+            << m.removed_closed_components << " closed pockets (" << m.removed_closed_faces << " faces) removed" << std::endl;
+  assert(merged.is_valid());
+  assert(seam_edges > 0);
+  return r;
+}
+
+void test_synthetic_terrain()
+{
+  std::cout << "synthetic terrain with buildings, 3 x 3 tiles" << std::endl;
+  const std::vector<Point> points = terrain_with_buildings(7);
+  std::vector<Mesh> tiles;
+  Mesh merged;
+  const LOC::Tiled_surface_report r = check_seams(points, 34, 2, tiles, merged);
+  assert(r.columns == 3 && r.rows == 3);
+  const Topology top = topology(merged);
+  assert(top.components == 1 && top.border_cycles == 1);
+
+  // Away from the seams (farther than 3 spacings from an inner border line) and from the frame,
+  // most triangles of the tiles are those of the untiled surface of the same points.
+  std::vector<Mesh> whole_tiles;
+  const double side = 100, margin = std::max(r.seam_spacing, 0.01 * side);
+  const double zf = -5;
+  const std::vector<Point> frame{Point(-margin, -margin, zf), Point(side + margin, -margin, zf),
+                                 Point(side + margin, side + margin, zf), Point(-margin, side + margin, zf),
+                                 Point(-margin, -margin, zf)};
+  Mesh whole;
+  CGAL::lex_optimal_open_surface_reconstruction(
+    points, std::vector<std::vector<Point>>{frame}, whole,
+    LOC::parameters::remove_blocking_points(true, LOC::parameters::drop_boundary_triangles(true)));
+  const std::set<Triangle> untiled = triangles_of(whole);
+  auto away = [&](const Point& p) {
+    const double d = 3 * r.seam_spacing;
+    for(int axis = 0; axis < 2; ++axis) {
+      const double c = axis == 0 ? p.x() : p.y(), width = axis == 0 ? r.tile_width : r.tile_height;
+      if(c < d || c > side - d) return false; // near the frame
+      for(std::size_t i = 1; i < 3; ++i) if(std::abs(c - double(i) * width) < d) return false;
+    }
+    return true;
+  };
+  std::size_t compared = 0, same = 0;
+  for(const Triangle& t : triangles_of(merged))
+    if(away(t[0]) && away(t[1]) && away(t[2])) {
+      ++compared;
+      same += untiled.count(t);
+    }
+  std::cout << "  away from the seams: " << same << " of " << compared << " triangles as in the untiled surface ("
+            << whole.number_of_faces() << " faces)" << std::endl;
+  assert(compared > 5000 && same >= 0.99 * double(compared));
+
+  // the same tiles on one thread, and from the points in another order
+  std::vector<Point> shuffled = points;
+  CGAL::Random rng(3);
+  for(std::size_t i = shuffled.size(); i > 1; --i) std::swap(shuffled[i - 1], shuffled[rng.get_int(0, int(i))]);
+  std::vector<Mesh> again;
+  CGAL::lex_optimal_tiled_surface_reconstruction(shuffled, 34, again);
+  for(std::size_t t = 0; t < tiles.size(); ++t) assert(triangles_of(again[t]) == triangles_of(tiles[t]));
+  std::cout << "  same tiles on one thread from shuffled points" << std::endl;
+}
+
+void test_aerial_scan(const std::string& data)
+{
+  std::cout << "b9_training.ply (aerial LiDAR of buildings), 2 x 2 tiles" << std::endl;
+  std::vector<Point> points;
+  if(!CGAL::IO::read_points(data + "/points_3/b9_training.ply", std::back_inserter(points))) {
+    std::cerr << "cannot read " << data << "/points_3/b9_training.ply" << std::endl;
+    std::exit(1);
+  }
+  std::vector<Mesh> tiles;
+  Mesh merged;
+  check_seams(points, 60, 2, tiles, merged);
+  const Topology top = topology(merged);
+  assert(top.components == 1 && top.border_cycles == 1);
+}
+
+void test_bad_input()
+{
+  std::cout << "bad input" << std::endl;
+  CGAL::Random rng(1);
+  const std::vector<Point> points = height_field<Point>(rng, 3000, 0.01);
+  std::vector<Mesh> tiles(1);
+  using Code = LOC::Input_error_code;
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(points, 0., tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(points, -2., tiles); });
+  expect_error(Code::INVALID_PARAMETER,
+               [&] { CGAL::lex_optimal_tiled_surface_reconstruction(points, std::numeric_limits<double>::quiet_NaN(), tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(points, 10., tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] {
+    CGAL::lex_optimal_tiled_surface_reconstruction(points, 5., tiles, LOC::parameters::seam_spacing(2.));
+  });
+  // a hole around the corner of the four tiles: no point to start the seams from
+  std::vector<Point> holed;
+  for(const Point& p : points)
+    if(std::abs(p.x() - 5) > 1 || std::abs(p.y() - 5) > 1) holed.push_back(p);
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(holed, 5., tiles); });
+  expect_error(Code::EMPTY_INPUT, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(std::vector<Point>(), 5., tiles); });
+  std::vector<Point> nan = points;
+  nan[7] = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  expect_error(Code::NON_FINITE_COORDINATE, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(nan, 5., tiles); });
+  assert(tiles.size() == 1 && tiles[0].is_empty()); // unchanged
+}
+
+int main(int argc, char** argv)
+{
+  test_bad_input();
+  test_synthetic_terrain();
+  test_aerial_scan(argc > 1 ? argv[1] : CGAL::data_file_path(""));
+  std::cout << "done" << std::endl;
+  return 0;
+}
