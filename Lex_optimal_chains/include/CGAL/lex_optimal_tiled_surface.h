@@ -145,8 +145,8 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
                                       smallest_side / 4);
   if(!(spacing > 0) || !(spacing <= smallest_side / 4))
     throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
-                           "the seam spacing " + std::to_string(spacing) + " must be positive and at most a quarter of the side of a tile (" +
-                             std::to_string(smallest_side) + ")");
+                           "the seam spacing " + std::to_string(spacing) + " must be positive and at most " +
+                             std::to_string(smallest_side / 4) + ", a quarter of the side of a tile");
   report.tile_width = tile_width;
   report.tile_height = tile_height;
   report.seam_spacing = spacing;
