@@ -35,25 +35,9 @@ using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace LOC = CGAL::Lex_optimal_chains;
 
-// n points on a 1 km x 1 km terrain: hills, a grid of flat-roofed blocks 12 m high, noise 5 cm
-static std::vector<Point> noisy_terrain(std::size_t n)
-{
-  CGAL::Random rng(42);
-  std::vector<Point> pts;
-  pts.reserve(n);
-  while(pts.size() < n) {
-    const double x = rng.get_double(0, 1000), y = rng.get_double(0, 1000);
-    double z = 20 * std::sin(x / 160) * std::cos(y / 210) + 0.01 * x;
-    const double bx = std::fmod(x, 100), by = std::fmod(y, 100);
-    if(bx > 30 && bx < 70 && by > 25 && by < 75) z += 12;
-    pts.emplace_back(x, y, z + rng.get_double(-0.05, 0.05));
-  }
-  return pts;
-}
-
 static int one(const std::string& mode, std::size_t n, bool verbose)
 {
-  const std::vector<Point> pts = noisy_terrain(n);
+  const std::vector<Point> pts = noisy_terrain<Point>(n);
   const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(pts)};
   const double base_mb = peak_rss_mb();
   CGAL::Real_timer t;

@@ -1,4 +1,4 @@
-// Shared by the benchmarks: peak memory of this process, one measurement run in a child
+// Shared by the benchmarks: a terrain-like cloud, peak memory of this process, one measurement run in a child
 // process (peak memory is per process) whose one-line flat JSON is parsed, all the
 // measurements of a run on one CPU, the median of repeated measurements, and the command line
 // (sizes and --repeat R).
@@ -9,13 +9,33 @@
 #include <unistd.h>
 #include <sys/resource.h>
 
+#include <CGAL/Random.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <map>
 #include <string>
 #include <vector>
+
+// n points on a 1 km x 1 km terrain: hills, a grid of flat-roofed blocks 12 m high, noise 5 cm
+template <class Point>
+std::vector<Point> noisy_terrain(std::size_t n)
+{
+  CGAL::Random rng(42);
+  std::vector<Point> pts;
+  pts.reserve(n);
+  while(pts.size() < n) {
+    const double x = rng.get_double(0, 1000), y = rng.get_double(0, 1000);
+    double z = 20 * std::sin(x / 160) * std::cos(y / 210) + 0.01 * x;
+    const double bx = std::fmod(x, 100), by = std::fmod(y, 100);
+    if(bx > 30 && bx < 70 && by > 25 && by < 75) z += 12;
+    pts.emplace_back(x, y, z + rng.get_double(-0.05, 0.05));
+  }
+  return pts;
+}
 
 inline double peak_rss_mb()
 {

@@ -27,7 +27,10 @@
 #include <cstdint>
 #include <exception>
 #include <string>
+#include <unordered_map>
 #include <vector>
+
+#include <boost/functional/hash.hpp>
 
 namespace CGAL {
 
@@ -241,53 +244,67 @@ Tile_merge_report merge_tile_meshes(const std::vector<PolygonMesh>& tile_meshes,
   using Point = typename boost::property_traits<typename boost::property_map<PolygonMesh, vertex_point_t>::const_type>::value_type;
   internal::Stopwatch watch;
   Tile_merge_report report;
-  std::vector<Point> points;
+  // one index per distinct point (hashed), and the number of tiles where it is a vertex
+  struct Point_hash
+  {
+    std::size_t operator()(const Point& p) const
+    {
+      std::size_t seed = 0;
+      boost::hash_combine(seed, p.x());
+      boost::hash_combine(seed, p.y());
+      boost::hash_combine(seed, p.z());
+      return seed;
+    }
+  };
+  std::unordered_map<Point, std::uint32_t, Point_hash> index_of;
+  std::vector<Point> distinct;
+  std::vector<std::uint32_t> last_tile, tiles_of_point;
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  for(const PolygonMesh& m : tile_meshes) {
+  for(std::size_t t = 0; t < tile_meshes.size(); ++t) {
+    const PolygonMesh& m = tile_meshes[t];
     const auto vpm = get(vertex_point, m);
+    auto global = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), m);
+    for(auto v : vertices(m)) {
+      const auto inserted = index_of.emplace(get(vpm, v), std::uint32_t(distinct.size()));
+      if(inserted.second) {
+        distinct.push_back(get(vpm, v));
+        last_tile.push_back(std::uint32_t(t));
+        tiles_of_point.push_back(1);
+      } else if(last_tile[inserted.first->second] != t) {
+        last_tile[inserted.first->second] = std::uint32_t(t);
+        ++tiles_of_point[inserted.first->second];
+      }
+      put(global, v, inserted.first->second);
+    }
     for(auto f : faces(m)) {
-      std::array<std::uint32_t, 3> t;
+      std::array<std::uint32_t, 3> tri;
       int k = 0;
       for(auto h : halfedges_around_face(halfedge(f, m), m)) {
         if(k == 3) throw Input_error(Input_error_code::INVALID_PARAMETER, "a face of a tile mesh is not a triangle");
-        t[k++] = std::uint32_t(points.size());
-        points.push_back(get(vpm, target(h, m)));
+        tri[k++] = get(global, target(h, m));
       }
       if(k != 3) throw Input_error(Input_error_code::INVALID_PARAMETER, "a face of a tile mesh is not a triangle");
-      triangles.push_back(t);
+      triangles.push_back(tri);
     }
   }
-  // one index per distinct point
-  std::vector<std::uint32_t> order(points.size());
-  for(std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return points[a] < points[b]; });
-  std::vector<std::uint32_t> index(points.size());
-  std::vector<Point> distinct;
-  for(std::size_t i = 0; i < order.size(); ++i) {
-    if(i == 0 || points[order[i]] != points[order[i - 1]]) distinct.push_back(points[order[i]]);
-    index[order[i]] = std::uint32_t(distinct.size() - 1);
-  }
-  for(auto& t : triangles)
-    for(auto& v : t) v = index[v];
   // The union is the sum of the chains of the tiles: a triangle that two tiles both have (where
   // a seam makes a narrow excursion, up a wall and down again, both tiles span it, each with the
-  // orientation of its own cycle) cancels out, as the seam itself does.
+  // orientation of its own cycle) cancels out, as the seam itself does. Only a triangle whose
+  // three points are vertices of several tiles can be one.
   {
-    std::vector<std::uint32_t> by_vertices(triangles.size());
-    for(std::uint32_t i = 0; i < by_vertices.size(); ++i) by_vertices[i] = i;
-    auto key = [&](std::uint32_t i) {
-      std::array<std::uint32_t, 3> k = triangles[i];
-      std::sort(k.begin(), k.end());
-      return k;
-    };
-    std::sort(by_vertices.begin(), by_vertices.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return std::make_pair(key(a), a) < std::make_pair(key(b), b);
-    });
+    std::vector<std::pair<std::array<std::uint32_t, 3>, std::size_t>> candidates;
+    for(std::size_t i = 0; i < triangles.size(); ++i) {
+      std::array<std::uint32_t, 3> key = triangles[i];
+      if(tiles_of_point[key[0]] < 2 || tiles_of_point[key[1]] < 2 || tiles_of_point[key[2]] < 2) continue;
+      std::sort(key.begin(), key.end());
+      candidates.emplace_back(key, i);
+    }
+    std::sort(candidates.begin(), candidates.end());
     std::vector<bool> kept(triangles.size(), true);
-    for(std::size_t i = 0, j; i < by_vertices.size(); i = j) {
-      for(j = i + 1; j < by_vertices.size() && key(by_vertices[j]) == key(by_vertices[i]); ++j) {}
+    for(std::size_t i = 0, j; i < candidates.size(); i = j) {
+      for(j = i + 1; j < candidates.size() && candidates[j].first == candidates[i].first; ++j) {}
       // pairs cancel: an odd count leaves the first one
-      for(std::size_t k = (j - i) % 2; k < j - i; ++k) kept[by_vertices[i + k]] = false;
+      for(std::size_t k = (j - i) % 2; k < j - i; ++k) kept[candidates[i + k].second] = false;
     }
     std::size_t n = 0;
     for(std::size_t i = 0; i < triangles.size(); ++i)

@@ -1,0 +1,122 @@
+// Benchmark of the tiled reconstruction of a city-like terrain (section 4.8, Fig. 4.27 and
+// Table 4.2 of the thesis): a cloud of 1 km x 1 km (hills, a grid of blocks 12 m high, noise
+// 5 cm) meshed untiled (lex_optimal_open_surface_reconstruction() with the automatic footprint
+// boundary) and in tiles of about 250,000 points (lex_optimal_tiled_surface_reconstruction(),
+// then merge_tile_meshes()) on 1 and 2 threads, against the Delaunay triangulation of the
+// same points (the baseline). Each measurement runs in a fresh process (peak memory is per
+// process); the one-thread runs on one CPU.
+//
+//   benchmark_tiled_surface [N ...] [--repeat R]     (default: 1,000,000 and 5,000,000)
+//   benchmark_tiled_surface --one MODE N [THREADS]   one measurement (delaunay | untiled | tiled), JSON
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/lex_optimal_open_surface.h>
+#include <CGAL/lex_optimal_tiled_surface.h>
+#include <CGAL/Lex_optimal_chains/footprint_boundary.h>
+
+#include "benchmark_support.h"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace LOC = CGAL::Lex_optimal_chains;
+
+// the side of tiles of about 250,000 points of the 1 km x 1 km terrain of n points
+static double tile_size(std::size_t n) { return 1000 * std::sqrt(250000. / double(n)); }
+
+static int one(const std::string& mode, std::size_t n, unsigned threads)
+{
+  if(threads > 1) allow_all_cpus();
+  const std::vector<Point> pts = noisy_terrain<Point>(n);
+  const double base_mb = peak_rss_mb();
+  CGAL::Real_timer t;
+  std::ostringstream json;
+  json << std::setprecision(6) << "{\"mode\":\"" << mode << "\",\"n\":" << n << ",\"threads\":" << threads;
+  if(mode == "delaunay") {
+    t.start();
+    CGAL::Delaunay_triangulation_3<K> dt(pts.begin(), pts.end());
+    t.stop();
+    json << ",\"total_s\":" << t.time() << ",\"cells\":" << dt.number_of_cells();
+  } else if(mode == "untiled") {
+    Mesh mesh;
+    t.start();
+    const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(pts)};
+    const auto r = CGAL::lex_optimal_open_surface_reconstruction(
+      pts, boundary, mesh, LOC::parameters::drop_boundary_triangles(true, LOC::parameters::number_of_threads(threads)));
+    t.stop();
+    json << ",\"total_s\":" << t.time() << ",\"faces\":" << r.mesh_faces;
+  } else if(mode == "tiled") {
+    std::vector<Mesh> tiles;
+    Mesh merged;
+    t.start();
+    const auto r = CGAL::lex_optimal_tiled_surface_reconstruction(pts, tile_size(n), tiles,
+                                                                  LOC::parameters::number_of_threads(threads));
+    const auto m = LOC::merge_tile_meshes(tiles, merged);
+    t.stop();
+    double largest_tile = 0;
+    for(const auto& tile : r.tiles) largest_tile = std::max(largest_tile, double(tile.number_of_points));
+    json << ",\"total_s\":" << t.time() << ",\"seam_s\":" << r.seam_seconds << ",\"tiles_s\":" << r.tiles_seconds
+         << ",\"merge_s\":" << m.seconds << ",\"tiles\":" << r.tiles.size() << ",\"largest_tile\":" << largest_tile
+         << ",\"faces\":" << m.mesh_faces << ",\"non_manifold_vertices\":" << m.non_manifold_vertices
+         << ",\"removed_pockets\":" << m.removed_closed_components;
+  } else {
+    std::cerr << "unknown mode " << mode << "\n";
+    return 2;
+  }
+  json << ",\"points_mb\":" << base_mb << ",\"peak_rss_mb\":" << peak_rss_mb() << "}";
+  std::cout << json.str() << std::endl;
+  return 0;
+}
+
+int main(int argc, char** argv)
+{
+  if((argc == 4 || argc == 5) && std::string(argv[1]) == "--one")
+    return one(argv[2], std::stoul(argv[3]), argc == 5 ? unsigned(std::stoul(argv[4])) : 1u);
+  std::vector<std::size_t> sizes;
+  std::size_t repeat = 1;
+  if(!parse_sizes(argc, argv, sizes, repeat)) {
+    std::cerr << "usage: " << argv[0] << " [N ...] [--repeat R]   (medians of R runs of each measurement)\n"
+              << "       " << argv[0] << " --one MODE N [THREADS]\n";
+    return 2;
+  }
+  if(sizes.empty()) sizes = {1000000, 5000000};
+  pin_measurements_to_one_cpu();
+  std::cout << std::fixed << std::setprecision(3)
+            << "   points  tiles  delaunay_s  untiled_s  tiled_1t_s  tiled_2t_s  untiled/DT  tiled_1t/DT  tiled_2t/DT"
+               "  2t/1t  peak_GB: DT  untiled  tiled_1t  tiled_2t\n";
+  const std::string self = argv[0];
+  for(std::size_t n : sizes) {
+    std::vector<std::map<std::string, double>> ds, us, t1s, t2s, rs;
+    for(std::size_t k = 0; k < repeat; ++k) {
+      auto d = run_child(self + " --one delaunay " + std::to_string(n));
+      auto u = run_child(self + " --one untiled " + std::to_string(n));
+      auto t1 = run_child(self + " --one tiled " + std::to_string(n) + " 1");
+      auto t2 = run_child(self + " --one tiled " + std::to_string(n) + " 2");
+      const double dt = d["total_s"];
+      rs.push_back({{"untiled_dt", u["total_s"] / dt}, {"t1_dt", t1["total_s"] / dt}, {"t2_dt", t2["total_s"] / dt},
+                    {"t2_t1", t2["total_s"] / t1["total_s"]}});
+      ds.push_back(d); us.push_back(u); t1s.push_back(t1); t2s.push_back(t2);
+    }
+    auto d = median(ds), u = median(us), t1 = median(t1s), t2 = median(t2s), r = median(rs);
+    std::cout << std::setw(9) << n << "  " << std::setw(5) << t1["tiles"] << "  " << std::setw(10) << d["total_s"]
+              << "  " << std::setw(9) << u["total_s"] << "  " << std::setw(10) << t1["total_s"] << "  " << std::setw(10)
+              << t2["total_s"] << "  " << std::setw(10) << r["untiled_dt"] << "  " << std::setw(11) << r["t1_dt"] << "  "
+              << std::setw(11) << r["t2_dt"] << "  " << std::setw(5) << r["t2_t1"] << "  " << std::setw(11)
+              << d["peak_rss_mb"] / 1024 << "  " << std::setw(7) << u["peak_rss_mb"] / 1024 << "  " << std::setw(8)
+              << t1["peak_rss_mb"] / 1024 << "  " << std::setw(8) << t2["peak_rss_mb"] / 1024;
+    if(repeat > 1) std::cout << "  medians of " << repeat << " runs";
+    std::cout << std::endl;
+  }
+  std::cout << "thesis, Table 4.2 (Dublin, untiled, one tile each): 1,056,038 points: Delaunay 2.633 s, total 4.208 s, "
+               "1.4 GB; 5,225,819 points: 14.416 s, 22.461 s, 5.5 GB\n";
+  return 0;
+}
