@@ -380,8 +380,8 @@ static int run_tiles(const std::string& input, const std::string& directory, con
 {
   if(t.coefficients != "z2" && t.coefficients != "q")
     throw std::invalid_argument("--coefficients must be z2 or q, not '" + t.coefficients + "'");
-  // the directory: an existing one, or one created after the work in an existing directory;
-  // checked writable before the work
+  // the directory: an existing one, or one created (with the first tile) in an existing
+  // directory; checked writable before the work
   namespace fs = std::filesystem;
   std::error_code error;
   const bool exists = fs::exists(directory, error);
@@ -399,38 +399,45 @@ static int run_tiles(const std::string& input, const std::string& directory, con
   };
   const std::vector<Point> points = LOC::IO::read_point_file<Point>(input);
   const LOC::Coefficient_field field = t.coefficients == "z2" ? LOC::Coefficient_field::Z2 : LOC::Coefficient_field::Q;
-  std::vector<Mesh> tiles;
-  const LOC::Tiled_surface_report r = CGAL::lex_optimal_tiled_surface_reconstruction(
-    points, t.tile_size, tiles,
-    LOC::parameters::seam_spacing(t.seam_spacing,
-    LOC::parameters::coefficient_field(field,
-    LOC::parameters::keep_non_manifold(options.keep_non_manifold,
-    LOC::parameters::number_of_threads(options.threads)))));
-  CGAL::Real_timer io;
-  io.start();
-  if(!exists && !fs::create_directory(directory, error))
-    throw std::runtime_error("cannot create the tile directory '" + directory + "' (" + error.message() + ")");
-  // on an error while writing, the tiles written before are removed: none is left
+  // Each tile is written as soon as it is reconstructed, and freed unless the union is asked
+  // for: the memory is that of the tiles being reconstructed. The directory is created with the
+  // first tile; on an error, the tiles written (and the directory, if created) are removed.
   std::vector<std::string> written;
+  CGAL::Real_timer io;
+  auto write_tile = [&](const LOC::Tile_report& tile, Mesh& mesh) {
+    io.start();
+    if(!exists && written.empty() && !fs::create_directory(directory, error))
+      throw std::runtime_error("cannot create the tile directory '" + directory + "' (" + error.message() + ")");
+    const std::string path = tile_path(tile.column, tile.row);
+    Output_file(path).write(mesh, options.ascii);
+    written.push_back(path);
+    if(!merged_file) mesh = Mesh();
+    io.stop();
+  };
+  std::vector<Mesh> tiles;
+  LOC::Tiled_surface_report r;
   try {
-    for(std::size_t i = 0; i < tiles.size(); ++i) {
-      const std::string path = tile_path(r.tiles[i].column, r.tiles[i].row);
-      Output_file(path).write(tiles[i], options.ascii);
-      written.push_back(path);
-    }
+    r = CGAL::lex_optimal_tiled_surface_reconstruction(
+      points, t.tile_size, tiles,
+      LOC::parameters::seam_spacing(t.seam_spacing,
+      LOC::parameters::coefficient_field(field,
+      LOC::parameters::keep_non_manifold(options.keep_non_manifold,
+      LOC::parameters::number_of_threads(options.threads,
+      LOC::parameters::tile_visitor(write_tile))))));
   } catch(...) {
     for(const std::string& path : written) fs::remove(path, error);
+    if(!exists && !written.empty()) fs::remove(directory, error);
     throw;
   }
-  io.stop();
   Mesh merged;
   LOC::Tile_merge_report m;
+  CGAL::Real_timer merged_io;
   if(merged_file) {
     m = LOC::merge_tile_meshes(tiles, merged, field);
     merged.collect_garbage(); // the closed pockets removed: the writer numbers the vertices left
-    io.start();
+    merged_io.start();
     merged_file->write(merged, options.ascii);
-    io.stop();
+    merged_io.stop();
   }
   if(options.json) {
     nlohmann::json j;
@@ -448,8 +455,8 @@ static int run_tiles(const std::string& input, const std::string& directory, con
     j["seam_s"] = r.seam_seconds;
     j["tiles_s"] = r.tiles_seconds;
     j["merge_s"] = m.seconds;
-    j["write_s"] = io.time();
-    j["total_s"] = r.total_seconds + m.seconds + io.time();
+    j["write_s"] = io.time() + merged_io.time(); // the tiles' within tiles_s
+    j["total_s"] = r.total_seconds + m.seconds + merged_io.time();
     j["peak_rss_mb"] = peak_rss_mb();
     nlohmann::json per_tile = nlohmann::json::array();
     for(const LOC::Tile_report& tile : r.tiles)

@@ -2,12 +2,14 @@
 // Table 4.2 of the thesis): a cloud of 1 km x 1 km (hills, a grid of blocks 12 m high, noise
 // 5 cm) meshed untiled (lex_optimal_open_surface_reconstruction() with the automatic footprint
 // boundary) and in tiles of about 250,000 points (lex_optimal_tiled_surface_reconstruction(),
-// then merge_tile_meshes()) on 1 and 2 threads, against the Delaunay triangulation of the
-// same points (the baseline). Each measurement runs in a fresh process (peak memory is per
-// process); the one-thread runs on one CPU.
+// then merge_tile_meshes()) on 1 and 2 threads, and streamed on 2 threads (each tile freed
+// as soon as it is made, as `lex_reconstruct tiles` does after writing it; no union), against
+// the Delaunay triangulation of the same points (the baseline). Each measurement runs in a
+// fresh process (peak memory is per process); the one-thread runs on one CPU. Above 5M points
+// only the Delaunay triangulation and the streamed tiles run.
 //
 //   benchmark_tiled_surface [N ...] [--repeat R]     (default: 1,000,000 and 5,000,000)
-//   benchmark_tiled_surface --one MODE N [THREADS]   one measurement (delaunay | untiled | tiled), JSON
+//   benchmark_tiled_surface --one MODE N [THREADS]   one measurement (delaunay | untiled | tiled | streamed), JSON
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Real_timer.h>
@@ -54,13 +56,20 @@ static int one(const std::string& mode, std::size_t n, unsigned threads)
       pts, boundary, mesh, LOC::parameters::drop_boundary_triangles(true, LOC::parameters::number_of_threads(threads)));
     t.stop();
     json << ",\"total_s\":" << t.time() << ",\"faces\":" << r.mesh_faces;
-  } else if(mode == "tiled") {
+  } else if(mode == "tiled" || mode == "streamed") {
     std::vector<Mesh> tiles;
     Mesh merged;
+    std::size_t faces = 0;
+    auto free_tile = [&](const LOC::Tile_report& tile, Mesh& mesh) {
+      faces += tile.mesh_faces;
+      if(mode == "streamed") mesh = Mesh();
+    };
     t.start();
-    const auto r = CGAL::lex_optimal_tiled_surface_reconstruction(pts, tile_size(n), tiles,
-                                                                  LOC::parameters::number_of_threads(threads));
-    const auto m = LOC::merge_tile_meshes(tiles, merged);
+    const auto r = CGAL::lex_optimal_tiled_surface_reconstruction(
+      pts, tile_size(n), tiles, LOC::parameters::number_of_threads(threads, LOC::parameters::tile_visitor(free_tile)));
+    LOC::Tile_merge_report m;
+    if(mode == "tiled") m = LOC::merge_tile_meshes(tiles, merged);
+    else m.mesh_faces = faces;
     t.stop();
     double largest_tile = 0;
     for(const auto& tile : r.tiles) largest_tile = std::max(largest_tile, double(tile.number_of_points));
@@ -91,28 +100,32 @@ int main(int argc, char** argv)
   if(sizes.empty()) sizes = {1000000, 5000000};
   pin_measurements_to_one_cpu();
   std::cout << std::fixed << std::setprecision(3)
-            << "   points  tiles  delaunay_s  untiled_s  tiled_1t_s  tiled_2t_s  untiled/DT  tiled_1t/DT  tiled_2t/DT"
-               "  2t/1t  peak_GB: DT  untiled  tiled_1t  tiled_2t\n";
+            << "   points  tiles  delaunay_s  untiled_s  tiled_1t_s  tiled_2t_s  streamed_2t_s  untiled/DT  tiled_1t/DT"
+               "  tiled_2t/DT  streamed/DT  2t/1t  peak_GB: DT  untiled  tiled_1t  tiled_2t  streamed\n";
   const std::string self = argv[0];
   for(std::size_t n : sizes) {
-    std::vector<std::map<std::string, double>> ds, us, t1s, t2s, rs;
+    std::vector<std::map<std::string, double>> ds, us, t1s, t2s, sts, rs;
     for(std::size_t k = 0; k < repeat; ++k) {
+      const bool all = n <= 5000000;
+      std::map<std::string, double> none;
       auto d = run_child(self + " --one delaunay " + std::to_string(n));
-      auto u = run_child(self + " --one untiled " + std::to_string(n));
-      auto t1 = run_child(self + " --one tiled " + std::to_string(n) + " 1");
-      auto t2 = run_child(self + " --one tiled " + std::to_string(n) + " 2");
+      auto u = all ? run_child(self + " --one untiled " + std::to_string(n)) : none;
+      auto t1 = all ? run_child(self + " --one tiled " + std::to_string(n) + " 1") : none;
+      auto t2 = all ? run_child(self + " --one tiled " + std::to_string(n) + " 2") : none;
+      auto st = run_child(self + " --one streamed " + std::to_string(n) + " 2");
       const double dt = d["total_s"];
       rs.push_back({{"untiled_dt", u["total_s"] / dt}, {"t1_dt", t1["total_s"] / dt}, {"t2_dt", t2["total_s"] / dt},
-                    {"t2_t1", t2["total_s"] / t1["total_s"]}});
-      ds.push_back(d); us.push_back(u); t1s.push_back(t1); t2s.push_back(t2);
+                    {"st_dt", st["total_s"] / dt}, {"t2_t1", t1["total_s"] > 0 ? t2["total_s"] / t1["total_s"] : 0}});
+      ds.push_back(d); us.push_back(u); t1s.push_back(t1); t2s.push_back(t2); sts.push_back(st);
     }
-    auto d = median(ds), u = median(us), t1 = median(t1s), t2 = median(t2s), r = median(rs);
-    std::cout << std::setw(9) << n << "  " << std::setw(5) << t1["tiles"] << "  " << std::setw(10) << d["total_s"]
+    auto d = median(ds), u = median(us), t1 = median(t1s), t2 = median(t2s), st = median(sts), r = median(rs);
+    std::cout << std::setw(9) << n << "  " << std::setw(5) << int(st["tiles"]) << "  " << std::setw(10) << d["total_s"]
               << "  " << std::setw(9) << u["total_s"] << "  " << std::setw(10) << t1["total_s"] << "  " << std::setw(10)
-              << t2["total_s"] << "  " << std::setw(10) << r["untiled_dt"] << "  " << std::setw(11) << r["t1_dt"] << "  "
-              << std::setw(11) << r["t2_dt"] << "  " << std::setw(5) << r["t2_t1"] << "  " << std::setw(11)
-              << d["peak_rss_mb"] / 1024 << "  " << std::setw(7) << u["peak_rss_mb"] / 1024 << "  " << std::setw(8)
-              << t1["peak_rss_mb"] / 1024 << "  " << std::setw(8) << t2["peak_rss_mb"] / 1024;
+              << t2["total_s"] << "  " << std::setw(13) << st["total_s"] << "  " << std::setw(10) << r["untiled_dt"]
+              << "  " << std::setw(11) << r["t1_dt"] << "  " << std::setw(11) << r["t2_dt"] << "  " << std::setw(11)
+              << r["st_dt"] << "  " << std::setw(5) << r["t2_t1"] << "  " << std::setw(11) << d["peak_rss_mb"] / 1024
+              << "  " << std::setw(7) << u["peak_rss_mb"] / 1024 << "  " << std::setw(8) << t1["peak_rss_mb"] / 1024
+              << "  " << std::setw(8) << t2["peak_rss_mb"] / 1024 << "  " << std::setw(8) << st["peak_rss_mb"] / 1024;
     if(repeat > 1) std::cout << "  medians of " << repeat << " runs";
     std::cout << std::endl;
   }

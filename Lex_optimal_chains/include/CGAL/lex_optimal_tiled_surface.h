@@ -26,6 +26,9 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <functional>
+#include <mutex>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -86,6 +89,17 @@ points.
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{1}
   \cgalParamNEnd
+  \cgalParamNBegin{tile_visitor}
+    \cgalParamDescription{called as `visitor(report, mesh)` with each tile as soon as it is
+                          reconstructed (`report` its `Lex_optimal_chains::Tile_report`, `mesh`
+                          its mesh, which the visitor may move from or clear: what it leaves is
+                          the tile's entry of `tile_meshes`), one call at a time, from the
+                          thread that reconstructed the tile; to write the tiles as they come
+                          and keep the memory to that of the tiles being reconstructed. An
+                          exception it throws is the error of that tile}
+    \cgalParamType{a callable `void(const Lex_optimal_chains::Tile_report&, PolygonMesh&)`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
   \cgalParamNBegin{coefficient_field}
     \cgalParamDescription{the coefficients of the chains of the tiles (see `lex_optimal_open_surface_reconstruction()`)}
     \cgalParamType{`Lex_optimal_chains::Coefficient_field`}
@@ -104,7 +118,8 @@ points.
 `TOO_FEW_POINTS`, `INVALID_PARAMETER` (a tile size that is not positive or gives one tile, a
 seam spacing out of its range, a tile corner with no input point near it: the seams run
 through the points), or the error of the first tile (in the order of the tiles) that cannot
-be reconstructed, its tile named in the message. `tile_meshes` is then unchanged.
+be reconstructed, its tile named in the message (an exception of the visitor becomes a
+`std::runtime_error` naming the tile). `tile_meshes` is then unchanged.
 */
 template <class PointRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Tiled_surface_report
@@ -121,6 +136,10 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
   const unsigned threads = choose_parameter(get_parameter(np, LOC::internal_np::number_of_threads), 1u);
   const LOC::Coefficient_field field = LOC::internal::coefficient_field_of(np);
   const bool keep = choose_parameter(get_parameter(np, LOC::internal_np::keep_non_manifold), false);
+  std::function<void(const LOC::Tile_report&, PolygonMesh&)> visitor;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, LOC::internal_np::tile_visitor_t>::value)
+    visitor = get_parameter(np, LOC::internal_np::tile_visitor);
+  std::mutex visitor_mutex;
 
   LOC::Tiled_surface_report report;
   LOC::internal::Stopwatch total, watch;
@@ -193,11 +212,15 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
       r.number_of_removed_points = open.number_of_removed_points;
       r.mesh_vertices = open.mesh_vertices;
       r.mesh_faces = open.mesh_faces;
+      std::vector<Point>().swap(tile_points[t]);
+      r.seconds = tile_watch.lap();
+      if(visitor) {
+        std::lock_guard<std::mutex> lock(visitor_mutex);
+        visitor(r, meshes[t]);
+      }
     } catch(...) {
       errors[t] = std::current_exception();
     }
-    std::vector<Point>().swap(tile_points[t]);
-    r.seconds = tile_watch.lap();
   });
   for(std::size_t t = 0; t < errors.size(); ++t) {
     if(!errors[t]) continue;
@@ -206,6 +229,8 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
       std::rethrow_exception(errors[t]);
     } catch(const LOC::Input_error& e) {
       throw LOC::Input_error(e.code(), where + e.what());
+    } catch(const std::exception& e) { // from the visitor
+      throw std::runtime_error(where + e.what());
     }
   }
   report.tiles_seconds = watch.lap();

@@ -28,6 +28,7 @@ enum keep_non_manifold_t { keep_non_manifold };
 enum robust_t { robust };
 enum smoothing_neighbors_t { smoothing_neighbors };
 enum seam_spacing_t { seam_spacing };
+enum tile_visitor_t { tile_visitor };
 
 } // namespace internal_np
 
@@ -75,6 +76,8 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(robust)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(smoothing_neighbors)
 /// Distance between consecutive seam points of the tiles of `lex_optimal_tiled_surface_reconstruction()` (0: chosen from the data).
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(seam_spacing)
+/// Called with each tile of `lex_optimal_tiled_surface_reconstruction()` as soon as it is reconstructed (to write it and free it).
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_visitor)
 
 #undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
 
