@@ -8,9 +8,11 @@
 //                   [--drop-boundary-triangles | --keep-boundary-triangles] [--keep-non-manifold]
 //                   [--threads N] [--ascii] [--json]
 //   lex_reconstruct tiles INPUT OUTPUT_DIR --tile-size S [--seam-spacing V] [--merged FILE]
-//                   [--coefficients z2|q] [--keep-non-manifold] [--threads N] [--ascii] [--json]
+//                   [--classes C,...] [--coefficients z2|q] [--keep-non-manifold] [--threads N]
+//                   [--ascii] [--json]
 //
-// INPUT: points as XYZ, PLY or OFF. OUTPUT: a mesh as OFF, PLY (binary unless --ascii) or
+// INPUT: points as XYZ, PLY, OFF or uncompressed LAS (1.0 to 1.4; --classes keeps the points of
+// these classifications). OUTPUT: a mesh as OFF, PLY (binary unless --ascii) or
 // OBJ, by extension.
 // Boundary FILE: CGAL's polylines text format, one closed polyline per line:
 // "n x1 y1 z1 ... xn yn zn" with the last point equal to the first.
@@ -373,6 +375,7 @@ struct Tiles_options
 {
   double tile_size = 0, seam_spacing = 0;
   std::string merged, coefficients = "q";
+  std::vector<int> classes; // of a LAS input (empty: all)
 };
 
 static int run_tiles(const std::string& input, const std::string& directory, const Tiles_options& t,
@@ -397,7 +400,7 @@ static int run_tiles(const std::string& input, const std::string& directory, con
   const auto tile_path = [&](std::size_t c, std::size_t r) {
     return (fs::path(directory) / ("tile_" + std::to_string(c) + "_" + std::to_string(r) + ".ply")).string();
   };
-  const std::vector<Point> points = LOC::IO::read_point_file<Point>(input);
+  const std::vector<Point> points = LOC::IO::read_point_file<Point>(input, t.classes);
   const LOC::Coefficient_field field = t.coefficients == "z2" ? LOC::Coefficient_field::Z2 : LOC::Coefficient_field::Q;
   // Each tile is written as soon as it is reconstructed, and freed unless the union is asked
   // for: the memory is that of the tiles being reconstructed. The directory is created with the
@@ -494,7 +497,7 @@ int main(int argc, char** argv)
   bool auto_boundary = false, remove_blocking = false, drop = false, keep = false;
 
   CLI::App* closed = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
-  closed->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
+  closed->add_option("INPUT", input, "points: .xyz, .ply, .off or .las")->required();
   closed->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
   closed->add_option("--interior", closed_options.interior_text, "a point inside the surface, X,Y,Z (repeatable)");
   closed->add_option("--exterior", closed_options.exterior_text, "a point outside the surface, X,Y,Z (repeatable)");
@@ -517,7 +520,7 @@ int main(int argc, char** argv)
   add_output_options(closed, options);
 
   CLI::App* open = app.add_subcommand("open", "open surface bounded by closed polylines");
-  open->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
+  open->add_option("INPUT", input, "points: .xyz, .ply, .off or .las")->required();
   open->add_option("OUTPUT", output, "mesh: .off, .ply or .obj")->required();
   auto* b = open->add_option("--boundary", boundary_file, "closed polylines, CGAL's polylines text format");
   auto* a = open->add_flag("--auto-boundary", auto_boundary,
@@ -533,13 +536,16 @@ int main(int argc, char** argv)
 
   Tiles_options tiles_options;
   CLI::App* tiles = app.add_subcommand("tiles", "a terrain-like cloud in tiles whose meshes meet exactly at their seams");
-  tiles->add_option("INPUT", input, "points: .xyz, .ply or .off")->required();
+  tiles->add_option("INPUT", input, "points: .xyz, .ply, .off or .las")->required();
   tiles->add_option("OUTPUT_DIR", output, "directory of the tile meshes tile_C_R.ply (created if missing)")->required();
   tiles->add_option("--tile-size", tiles_options.tile_size, "largest side of a tile, in the units of the points")->required();
   tiles->add_option("--seam-spacing", tiles_options.seam_spacing,
                     "distance between seam points (default: 3 times the mean spacing of the points)");
   tiles->add_option("--merged", tiles_options.merged, "also write the union of the tiles, welded at the seams (.off, .ply or .obj)");
   tiles->add_option("--coefficients", tiles_options.coefficients, "z2 (unoriented) or q (oriented upwards, default)");
+  tiles->add_option("--classes", tiles_options.classes, "with a LAS input: the classifications kept, e.g. 2,6 (ground, building)")
+    ->delimiter(',')
+    ->check(CLI::Range(0, 255));
   add_output_options(tiles, options);
   try {
     app.parse(argc, argv);

@@ -12,12 +12,15 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <cassert>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -97,7 +100,7 @@ void test_point_files()
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(short_binary_ply); }, "48 bytes, against 72");
 
   // not read at all
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("points.txt", "0 0 0\n")); }, "must end in .xyz, .ply or .off");
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("points.txt", "0 0 0\n")); }, "must end in .xyz, .ply, .off or .las");
   expect_unreadable([&] { LOC::IO::read_point_file<Point>((directory / "missing.xyz").string()); }, "cannot open input");
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(directory.string() + "/.xyz"); }, "must end in"); // a hidden file named xyz
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("garbage.off", "not an off file\n1 2\n")); },
@@ -142,11 +145,97 @@ void test_real_data(const std::string& data)
   }
 }
 
+// An uncompressed LAS file written here, as the specification lays it out (little-endian):
+// version 1.`minor`, point data record format `format`, the points as integers of scale
+// `scale` and offset `offset`, each with its classification; `declared` points in the header.
+std::string las_file(const std::string& name, unsigned minor, unsigned format, const std::vector<Point>& points,
+                     const std::vector<int>& classes, double scale, const std::array<double, 3>& offset,
+                     std::size_t declared)
+{
+  const std::uint16_t lengths[] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+  const std::uint16_t header_size = minor >= 4 ? 375 : 227, record = lengths[format];
+  std::vector<unsigned char> bytes(header_size, 0);
+  auto put = [&](std::size_t at, const void* value, std::size_t size) { std::memcpy(&bytes[at], value, size); };
+  std::memcpy(bytes.data(), "LASF", 4);
+  bytes[24] = 1;
+  bytes[25] = std::uint8_t(minor);
+  put(94, &header_size, 2);
+  const std::uint32_t offset_to_points = header_size;
+  put(96, &offset_to_points, 4);
+  bytes[104] = std::uint8_t(format);
+  put(105, &record, 2);
+  const std::uint32_t legacy = minor >= 4 ? 0 : std::uint32_t(declared);
+  put(107, &legacy, 4);
+  for(int c = 0; c < 3; ++c) {
+    put(131 + 8 * c, &scale, 8);
+    put(155 + 8 * c, &offset[c], 8);
+  }
+  if(minor >= 4) {
+    const std::uint64_t count = declared;
+    put(247, &count, 8);
+  }
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    std::vector<unsigned char> r(record, 0);
+    const double xyz[3] = {points[i].x(), points[i].y(), points[i].z()};
+    for(int c = 0; c < 3; ++c) {
+      const std::int32_t v = std::int32_t(std::lround((xyz[c] - offset[c]) / scale));
+      std::memcpy(&r[4 * c], &v, 4);
+    }
+    r[format <= 5 ? 15 : 16] = std::uint8_t(classes[i] | (format <= 5 ? 0x20 : 0)); // a flag bit above the class (0-5)
+    bytes.insert(bytes.end(), r.begin(), r.end());
+  }
+  return file(name, std::string(bytes.begin(), bytes.end()));
+}
+
+void test_las_files()
+{
+  std::cout << "LAS files" << std::endl;
+  const std::vector<Point> points{Point(600000.25, 5400000.5, 101.75), Point(600010.5, 5400002.25, 99.5),
+                                  Point(600003.75, 5400008.0, 112.25), Point(600007.0, 5400004.75, 100.0)};
+  const std::vector<int> classes{2, 6, 5, 2};
+  const std::array<double, 3> offset{600000, 5400000, 0};
+  for(unsigned minor : {2u, 4u})
+    for(unsigned format : {0u, 1u, 3u, 6u, 7u, 10u}) {
+      if(minor < 4 && format > 5) continue; // formats 6 to 10 came with LAS 1.4
+      const std::string path = las_file("p" + std::to_string(minor) + std::to_string(format) + ".las", minor, format,
+                                        points, classes, 0.01, offset, points.size());
+      const std::vector<Point> all = LOC::IO::read_point_file<Point>(path);
+      assert(all == points); // the scale and offset applied: these coordinates are exact
+      const std::vector<Point> ground_and_buildings = LOC::IO::read_point_file<Point>(path, {2, 6});
+      assert(ground_and_buildings == (std::vector<Point>{points[0], points[1], points[3]}));
+    }
+  const std::string good = las_file("good.las", 2, 1, points, classes, 0.01, offset, points.size());
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("a.laz", "LASF")); }, "LAZ");
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("a.xyz", "0 0 0\n1 0 0\n"), {2}); }, "LAS files only");
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("b.las", "PLY and more bytes than a header needs")); }, "LASF");
+  // more points declared than the file holds
+  const std::string cut = las_file("cut.las", 2, 1, points, classes, 0.01, offset, points.size() + 1);
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(cut); }, "shorter than its header says");
+  // compressed data (LASzip sets the high bits of the format)
+  std::string compressed;
+  {
+    std::ifstream in(good, std::ios::binary);
+    compressed.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    compressed[104] = char(0x80 | 1);
+  }
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("zipped.las", compressed)); }, "LAZ");
+  // a record length too short for its format, a version beyond 1.4
+  std::string short_records = compressed;
+  short_records[104] = 1;
+  short_records[105] = 20;
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("short.las", short_records)); }, "too short");
+  std::string version = short_records;
+  version[105] = 28;
+  version[25] = 5;
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("v15.las", version)); }, "version");
+}
+
 int main(int argc, char** argv)
 {
   fs::create_directories(directory);
   test_point_files();
   test_polyline_files();
+  test_las_files();
   if(argc > 1) test_real_data(argv[1]);
   fs::remove_all(directory);
   std::cout << "OK\n";

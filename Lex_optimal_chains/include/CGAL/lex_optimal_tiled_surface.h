@@ -19,6 +19,7 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
@@ -245,8 +246,9 @@ namespace Lex_optimal_chains {
 /*!
 \ingroup PkgLexOptimalChainsRef
 
-Welds the meshes of `lex_optimal_tiled_surface_reconstruction()` into one: vertices at the
-same point become one (the seam points, which both tiles of a seam share), two faces on the
+Welds the meshes of `lex_optimal_tiled_surface_reconstruction()` into one: border vertices at
+the same point become one (the seam points, which both tiles of a seam share on their
+borders), two faces on the
 same three points cancel out (the union is the sum of the chains of the tiles: where a seam
 makes a narrow excursion, up a wall and down again, both tiles span it; where they span it with
 different triangles, their sum is a closed pocket, and closed components are removed), and the
@@ -269,7 +271,7 @@ Tile_merge_report merge_tile_meshes(const std::vector<PolygonMesh>& tile_meshes,
   using Point = typename boost::property_traits<typename boost::property_map<PolygonMesh, vertex_point_t>::const_type>::value_type;
   internal::Stopwatch watch;
   Tile_merge_report report;
-  // one index per distinct point (hashed), and the number of tiles where it is a vertex
+  // one index per distinct point of the borders (hashed), and the number of tiles where it is a vertex
   struct Point_hash
   {
     std::size_t operator()(const Point& p) const
@@ -290,6 +292,15 @@ Tile_merge_report merge_tile_meshes(const std::vector<PolygonMesh>& tile_meshes,
     const auto vpm = get(vertex_point, m);
     auto global = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), m);
     for(auto v : vertices(m)) {
+      // Only a border vertex can be shared with another tile (a seam point is on the cycle of
+      // its tiles): the others get their own index without a lookup.
+      if(!CGAL::is_border(v, m)) {
+        put(global, v, std::uint32_t(distinct.size()));
+        distinct.push_back(get(vpm, v));
+        last_tile.push_back(std::uint32_t(t));
+        tiles_of_point.push_back(1);
+        continue;
+      }
       const auto inserted = index_of.emplace(get(vpm, v), std::uint32_t(distinct.size()));
       if(inserted.second) {
         distinct.push_back(get(vpm, v));

@@ -11,6 +11,7 @@
 #include <CGAL/license/Lex_optimal_chains.h>
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/IO/read_las_points.h>
 #include <CGAL/Lex_optimal_chains/internal/Declared_counts.h>
 
 #include <CGAL/IO/read_points.h>
@@ -34,7 +35,8 @@ namespace IO {
 \ingroup PkgLexOptimalChainsRef
 
 Reads the points of an XYZ, PLY or OFF file (by its extension, in any case) with CGAL's
-readers, and refuses what they would read in part: CGAL's readers stop after the number of
+readers, or of an uncompressed LAS file with `read_las_points()` (keeping the points whose
+classification is in `classes`, if not empty), and refuses what they would read in part: CGAL's readers stop after the number of
 points that an OFF or PLY header declares, so a header that declares fewer than the file holds
 would drop points silently. For ASCII files whose points come last (an OFF file without faces,
 a PLY file whose last element is the vertices) the data lines are counted against the header;
@@ -45,15 +47,22 @@ readers print to `std::cerr` are kept out of it: the error says what was wrong.
 
 \tparam Point_3 the point type, as for `CGAL::IO::read_points()`
 \throws Input_error with code `UNREADABLE_FILE`: another extension, a file that cannot be
-opened or read, or more data than its header declares.
+opened or read, more data than its header declares, a compressed LAS file (`.laz`), or
+`classes` given for a file that is not LAS.
 */
 template <class Point_3>
-std::vector<Point_3> read_point_file(const std::string& path)
+std::vector<Point_3> read_point_file(const std::string& path, const std::vector<int>& classes = {})
 {
   std::string extension = std::filesystem::path(path).extension().string();
   for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if(extension == ".laz")
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "'" + path + "': compressed LAS (LAZ) is not supported: "
+                                                         "decompress it first (laszip, or pdal translate in.laz out.las)");
+  if(extension == ".las") return read_las_points<Point_3>(path, classes);
   if(extension != ".xyz" && extension != ".ply" && extension != ".off")
-    throw Input_error(Input_error_code::UNREADABLE_FILE, "input '" + path + "' must end in .xyz, .ply or .off");
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "input '" + path + "' must end in .xyz, .ply, .off or .las");
+  if(!classes.empty())
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "classes are read from LAS files only, not from '" + path + "'");
   if(!std::filesystem::is_regular_file(path))
     throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot open input '" + path + "'");
   std::vector<Point_3> points;
