@@ -67,9 +67,7 @@ static int one(const std::string& mode, std::size_t n, bool verbose)
     std::cerr << "unknown mode " << mode << "\n";
     return 2;
   }
-  json << ",\"points_mb\":" << base_mb << ",\"peak_rss_mb\":" << peak_rss_mb() << "}";
-  std::cout << json.str() << std::endl;
-  return 0;
+  return print_measurement(json.str(), base_mb);
 }
 
 int main(int argc, char** argv)

@@ -68,6 +68,14 @@ inline void pin_measurements_to_one_cpu()
   else std::cout << "measurements not pinned to one CPU\n";
 }
 
+// Ends the one-line JSON of a measurement with the memory before it (`base_mb`) and the peak
+// memory, and prints it: what run_child() reads back.
+inline int print_measurement(const std::string& json_so_far, double base_mb)
+{
+  std::cout << json_so_far << ",\"points_mb\":" << base_mb << ",\"peak_rss_mb\":" << peak_rss_mb() << "}" << std::endl;
+  return 0;
+}
+
 // Lets the calling process run on every online CPU again (a measurement on several threads,
 // started by a process pinned to one CPU).
 inline void allow_all_cpus()

@@ -20,6 +20,7 @@
 
 #include "benchmark_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -32,8 +33,9 @@ using Point = K::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace LOC = CGAL::Lex_optimal_chains;
 
-// the side of tiles of about 250,000 points of the 1 km x 1 km terrain of n points
-static double tile_size(std::size_t n) { return 1000 * std::sqrt(250000. / double(n)); }
+// the side of tiles of about 250,000 points of the 1 km x 1 km terrain of n points (at least
+// 2 x 2 tiles)
+static double tile_size(std::size_t n) { return std::min(500., 1000 * std::sqrt(250000. / double(n))); }
 
 static int one(const std::string& mode, std::size_t n, unsigned threads)
 {
@@ -81,9 +83,7 @@ static int one(const std::string& mode, std::size_t n, unsigned threads)
     std::cerr << "unknown mode " << mode << "\n";
     return 2;
   }
-  json << ",\"points_mb\":" << base_mb << ",\"peak_rss_mb\":" << peak_rss_mb() << "}";
-  std::cout << json.str() << std::endl;
-  return 0;
+  return print_measurement(json.str(), base_mb);
 }
 
 int main(int argc, char** argv)
