@@ -174,6 +174,23 @@ void test_synthetic_terrain()
   std::cout << "  same tiles on one thread from shuffled points" << std::endl;
 }
 
+// A flat cloud (all heights 0, a parking lot): the frame is below it, so the tiles are not
+// coplanar with their cycles.
+void test_flat_cloud()
+{
+  std::cout << "flat cloud, 2 x 3 tiles" << std::endl;
+  CGAL::Random rng(5);
+  std::vector<Point> points;
+  for(int i = 0; i < 6000; ++i) points.emplace_back(rng.get_double(0, 40), rng.get_double(0, 60), 0.);
+  std::vector<Mesh> tiles;
+  Mesh merged;
+  const LOC::Tiled_surface_report r = check_seams(points, 21, 2, tiles, merged);
+  assert(r.columns == 2 && r.rows == 3);
+  const Topology top = topology(merged);
+  assert(top.components == 1 && top.border_cycles == 1);
+  for(auto v : merged.vertices()) assert(merged.point(v).z() == 0); // no frame point left
+}
+
 void test_aerial_scan(const std::string& data)
 {
   std::cout << "b9_training.ply (aerial LiDAR of buildings), 2 x 2 tiles" << std::endl;
@@ -220,6 +237,7 @@ int main(int argc, char** argv)
 {
   test_bad_input();
   test_synthetic_terrain();
+  test_flat_cloud();
   test_aerial_scan(argc > 1 ? argv[1] : CGAL::data_file_path(""));
   std::cout << "done" << std::endl;
   return 0;

@@ -10,18 +10,22 @@
 // points, so that every tile is an open surface bounded by a cycle that its neighbours share.
 //
 // Every inner border line of the grid (x = x_i or y = y_j) carries one polyline from one side
-// of a frame (a rectangle just outside the cloud) to the other:
+// of a frame to the other:
 //  - at each inner grid node, the corner point: the input point nearest to the node within the
 //    square of side s around it (s: the seam spacing); the horizontal and the vertical polyline
 //    through the node share it;
 //  - between two nodes, the border is cut into slices of length about s (leaving s free next
 //    to a corner), and each slice gives the input point nearest to its centre within the band
 //    of width s around the border (an empty slice gives none);
-//  - at the ends, a point of the frame on the border line.
-// A vertical polyline stays in its band, is strictly increasing in y, and meets a horizontal
-// one at their corner point only (near a corner both leave the corner in their own band), so
-// the polylines cut the plane into the tiles. The cycle of a tile follows its four sides: the
-// seams of its inner sides, the frame on the others (whose vertices are not input points: the
+//  - an edge longer than s is split by points on it (refine());
+//  - at the ends, a point of the frame on the border line, at the height of the seam point next
+//    to it.
+// The frame is a rectangle just outside the cloud whose sides bulge outward (frame_point()), so
+// that each frame edge is an edge of the triangulation of any tile whatever the heights. A
+// vertical polyline stays in its band, is strictly increasing in y, and meets a horizontal one
+// at their corner point only (near a corner both leave the corner in their own band), so the
+// polylines cut the plane into the tiles. The cycle of a tile follows its four sides: the seams
+// of its inner sides, the frame on the others (whose vertices are not input points: the
 // triangles that touch them are dropped, as the skirt of an open surface).
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
@@ -63,7 +67,8 @@ public:
     }
     const double side = std::max(high_[0] - low_[0], high_[1] - low_[1]);
     margin_ = std::max(seam_spacing, 0.01 * side);
-    frame_z_ = box.zmin() - 1e-3 * side; // below the points: a flat cloud is not coplanar with the frame
+    drop_ = 1e-3 * side;
+    frame_z_ = box.zmin() - drop_; // below the points: a flat cloud is not coplanar with the frame
     build_polylines(points);
   }
 
@@ -247,9 +252,11 @@ private:
           }
         }
         // the ends on the frame, at the heights of the seam points next to them (short edges to
-        // the frame: small diametral balls, few points removed near the frame by the tiles)
+        // the frame: small diametral balls, few points removed near the frame by the tiles),
+        // lowered as the frame is (a flat cloud is not coplanar with them)
         const std::size_t last = line.points.size() - 1;
-        const double z_first = last > 1 ? line.points[1].z() : frame_z_, z_last = last > 1 ? line.points[last - 1].z() : frame_z_;
+        const double z_first = last > 1 ? line.points[1].z() - drop_ : frame_z_;
+        const double z_last = last > 1 ? line.points[last - 1].z() - drop_ : frame_z_;
         line.points.front() = frame_point(other, false, border(axis, i), z_first);
         line.points.back() = frame_point(other, true, border(axis, i), z_last);
         refine(line);
@@ -320,7 +327,7 @@ private:
     return axis == 0 ? o != RIGHT_TURN : o != LEFT_TURN;
   }
 
-  double spacing_ = 0, margin_ = 0, frame_z_ = 0;
+  double spacing_ = 0, margin_ = 0, drop_ = 0, frame_z_ = 0;
   std::array<double, 2> low_{}, high_{}, step_{};
   std::array<std::size_t, 2> count_{};
   std::array<std::vector<Polyline>, 2> polylines_;
