@@ -145,6 +145,8 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
   LOC::Tiled_surface_report report;
   LOC::internal::Stopwatch total, watch;
   std::vector<Point> pts = LOC::internal::finite_points<Point>(points, point_map);
+  // Sorted and without duplicates: each tile gets its points in one order whatever the input's
+  // (the test gives the points shuffled, and each twice).
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   report.number_of_input_points = pts.size();
