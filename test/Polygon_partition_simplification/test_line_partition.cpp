@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_partition_simplification/line_partition_from_geometry_2.h>
 #include <CGAL/kinetic_partition_2.h>
 #include <CGAL/simplify_polygon_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Crossing_free_edges_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
 #include <algorithm>
@@ -822,6 +823,38 @@ void test_crossings_with_far_points()
   for(const auto& [i, j] : expected)
     if(i % 2 == 1 || j % 2 == 1) expected_odd.push_back({i, j});
   CHECK(odd == expected_odd);
+  // The same reference edges with their grid kept (Crossing_free_edges): the same pairs, and
+  // the same again for a state with some reference edges gone, others duplicated by a second
+  // edge on the same two points, and its points renumbered.
+  std::vector<std::array<double, 4>> reference;
+  for(std::size_t e = 0; e < edges.size(); e += 2)
+    reference.push_back({{points[edges[e][0]][0], points[edges[e][0]][1], points[edges[e][1]][0], points[edges[e][1]][1]}});
+  const PPS::internal::Crossing_free_edges crossing_free(reference);
+  CHECK(crossing_free.crossing_pairs<K>(points, edges, true) == expected_odd);
+  CHECK(crossing_free.crossing_pairs<K>(points, edges, false).size() == 1);
+  {
+    std::vector<std::array<double, 2>> renumbered(points.rbegin(), points.rend());
+    const std::size_t last = points.size() - 1;
+    std::vector<std::array<std::size_t, 2>> state;
+    for(std::size_t e = 0; e < edges.size(); ++e)
+      if(e % 6 != 2) state.push_back({{last - edges[e][0], last - edges[e][1]}});
+    state.push_back(state[3]); // a reference edge (edges[4]) given twice: both are suspects
+    std::vector<std::pair<std::size_t, std::size_t>> expected_state;
+    for(std::size_t i = 0; i < state.size(); ++i)
+      for(std::size_t j = i + 1; j < state.size(); ++j) {
+        const auto& a = renumbered[state[i][0]];
+        const auto& b = renumbered[state[i][1]];
+        const auto& c = renumbered[state[j][0]];
+        const auto& d = renumbered[state[j][1]];
+        const bool suspects = !known.contains(a, b) || !known.contains(c, d) || i == 3 || j == 3 || j + 1 == state.size();
+        if(suspects && PPS::internal::edges_meet<K>(renumbered, state[i], state[j])) expected_state.push_back({i, j});
+      }
+    const auto found_state = crossing_free.crossing_pairs<K>(renumbered, state, true);
+    std::cout << "crossings of a state against kept reference edges: " << found_state.size() << " pairs (brute force "
+              << expected_state.size() << ")" << std::endl;
+    CHECK(found_state == expected_state);
+    CHECK(!expected_state.empty());
+  }
 }
 
 // A straight wall at an angle given in pieces (a polyline with vertices on the wall, or

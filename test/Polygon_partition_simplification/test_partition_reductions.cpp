@@ -82,7 +82,8 @@ struct Scene
   }
 
   // The reductions after a descent that moved the lines `moved` (index, new coefficients) and
-  // no other: the result in `w`, the counts returned.
+  // no other: the result in `w`, the counts returned. The start's edges are taken as made by
+  // the reducer (those of a partition from rectangles are).
   I::Reduction_counts reduce(I::Working_partition& w, const std::vector<std::pair<std::size_t, I::Vector_3d>>& moved) const
   {
     std::vector<I::Vector_3d> coefficients;
@@ -92,17 +93,23 @@ struct Scene
       coefficients[l] = before[0] * c[0] + before[1] * c[1] < 0 ? I::Vector_3d{-c[0], -c[1], -c[2]} : c;
     }
     I::moved_partition(w, start, coefficients, std::vector<bool>(start.lines.size(), false));
+    I::Working_partition everywhere = w;
     const I::Round_start_edges start_edges(start);
     I::Partition_reducer reducer(w, thresholds);
-    const I::Reduction_counts counts = reducer.run(start_edges.orientations);
+    const I::Reduction_counts counts = reducer.run(start_edges.orientations, I::moved_lines(w, start));
     CHECK(reducer.conflicts().empty());
+    // told which lines moved, the reducer makes the edges again only around them and the
+    // merges: the same partition as when it makes them again everywhere
+    I::Partition_reducer everywhere_reducer(everywhere, thresholds);
+    everywhere_reducer.run(start_edges.orientations);
+    CHECK(w.edges == everywhere.edges && w.vertex_lines == everywhere.vertex_lines);
     return counts;
   }
 };
 
 std::string defect(const I::Working_partition& w)
 {
-  return I::partition_defect<GT>(I::Working_partition_view{w}, nullptr, [](const auto&, const auto&) { return true; });
+  return I::partition_defect<GT>(I::Working_partition_view{w}, nullptr, I::All_crossing_pairs<GT::Exact_predicates_kernel>());
 }
 
 // two points sharing two lines (the invariant of section 3.3.5 broken)
@@ -233,6 +240,24 @@ void test_far_corner_stays()
   CHECK(!defect(w).empty());
 }
 
+// An edge that the descent reversed and that no reduction removes: the wall between two squares
+// tilted so that it meets their top past the top right corner. The point it sent there stays
+// (no removal, and it is not far enough to be a collapse); along the top line the points now
+// come in another order, so the reducer makes the top line's edges again although the top line
+// did not move (Scene::reduce compares with the edges made again everywhere).
+void test_reversed_edge_kept()
+{
+  const Scene s({{0, 0, 10, 10}, {10, 0, 20, 10}});
+  I::Working_partition w;
+  const I::Reduction_counts counts = s.reduce(w, {{s.line(10, 0, 10, 10), s.line_through(10, 0, 25, 10)}});
+  CHECK(counts.far_points >= 1 && counts.total() == 0);
+  const std::size_t top = s.line(0, 10, 20, 10);
+  std::size_t top_edges = 0;
+  for(const auto& e : w.edges) top_edges += e[0] == top;
+  CHECK(top_edges == 2);
+  CHECK(!defect(w).empty());
+}
+
 // Eq. 3.15: with eta = d_P d_L^2 / (5 (1 + R^2)), R = 1, every triplet of lines (i, j, k) with
 // |det(L_i, L_j, L_k)| < eta is in one of the situations (a) two of its lines closer than d_L,
 // (b1) P_ij and P_ik closer than d_P, (b2) P_ij or P_ik outside the disk of radius R. Decided
@@ -311,7 +336,9 @@ void test_eta_bound()
 
 // Whole simplifications of synthetic footprints: every descent (from the partition after each
 // round, all lines free) does not raise the energy; after every round the partition is valid,
-// two lines share at most one point, and no point lies outside the disk of the partition.
+// two lines share at most one point, and no point lies outside the disk of the partition; the
+// reducer that makes the edges again only around what moved gives the partition it gives when
+// it makes them again everywhere.
 void test_rounds()
 {
   for(unsigned seed : {1u, 2u, 3u})
@@ -322,7 +349,7 @@ void test_rounds()
       Partition p = CGAL::kinetic_partition_2(segments);
       const I::Simplification_settings settings =
         I::simplification_settings(PPS::parameters::remove_far_points(remove_far_points), p.frame().scale);
-      std::size_t rounds = 0, descents_lowering = 0;
+      std::size_t rounds = 0, descents_lowering = 0, partial_reductions = 0;
       auto check_round = [&](const Partition& q, const Stats&) {
         CHECK(q.is_valid());
         std::vector<std::vector<std::size_t>> lines;
@@ -332,6 +359,30 @@ void test_rounds()
         for(I::Index v = 0; v < w.vertex_lines.size(); ++v) {
           const auto x = w.point(v);
           CHECK(x[0] * x[0] + x[1] * x[1] <= 1. + 1e-12);
+        }
+        // The reductions after a descent that moves some lines only: the edges made again around
+        // what moved and merged (the reducer told which lines moved) are those made again
+        // everywhere (the reducer told nothing).
+        {
+          std::vector<bool> changed(w.lines.size(), false);
+          for(std::size_t l = 0; l < w.lines.size(); l += 5) changed[l] = true;
+          std::size_t steps = 0;
+          const std::vector<I::Vector_3d> moved = I::descend(w, changed, settings, steps);
+          const I::Round_start_edges start_edges(w);
+          const std::vector<bool> none_frozen(w.lines.size(), false);
+          I::Working_partition local, everywhere;
+          I::moved_partition(local, w, moved, none_frozen);
+          I::moved_partition(everywhere, w, moved, none_frozen);
+          const std::vector<bool> moved_lines = I::moved_lines(local, w);
+          I::Partition_reducer local_reducer(local, settings.thresholds), everywhere_reducer(everywhere, settings.thresholds);
+          const std::size_t reductions = local_reducer.run(start_edges.orientations, moved_lines).total();
+          everywhere_reducer.run(start_edges.orientations);
+          CHECK(local.edges == everywhere.edges);
+          CHECK(local.vertex_lines == everywhere.vertex_lines);
+          CHECK(local.lines.size() == everywhere.lines.size());
+          for(std::size_t l = 0; l < std::min(local.lines.size(), everywhere.lines.size()); ++l)
+            CHECK(local.lines[l].coefficients == everywhere.lines[l].coefficients);
+          if(reductions > 0 && std::count(moved_lines.begin(), moved_lines.end(), false) > 0) ++partial_reductions;
         }
         const double before = I::energy_in_collapse_units(w, settings);
         std::size_t steps = 0;
@@ -351,6 +402,8 @@ void test_rounds()
                 << s.rounds << " rounds, " << s.line_merges << " line merges, " << s.point_merges << " point merges, "
                 << s.far_point_removals << " far points removed, " << s.rejected_rounds << " redone; cells " << s.cells_before << " -> " << s.cells_after << std::endl;
       CHECK(rounds == s.rounds && descents_lowering > 0);
+      std::cout << "  reductions after a partial descent, edges made again locally: " << partial_reductions << " rounds" << std::endl;
+      CHECK(partial_reductions > 0);
     }
 }
 
@@ -360,6 +413,7 @@ int main()
   test_point_merge();
   test_far_point_removal();
   test_far_corner_stays();
+  test_reversed_edge_kept();
   test_eta_bound();
   test_rounds();
   std::cout << "ok" << std::endl;

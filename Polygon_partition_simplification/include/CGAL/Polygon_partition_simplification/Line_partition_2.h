@@ -387,7 +387,7 @@ private:
   std::string analyze(std::vector<std::size_t>* defective) const
   {
     return internal::partition_defect<Geom_traits>(Validity_view{*this}, defective,
-                                                   [](const auto&, const auto&) { return true; });
+                                                   internal::All_crossing_pairs<Exact_predicates_kernel>());
   }
 
   // do two drawable edges meet elsewhere than at a common end?

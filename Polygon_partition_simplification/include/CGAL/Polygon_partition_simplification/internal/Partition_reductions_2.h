@@ -81,9 +81,13 @@ public:
   }
 
   // `orientations`: those of the edges before the descent. An edge whose orientation
-  // reversed went through a collapse during the descent: it is collapsed (b1).
-  Reduction_counts run(const std::vector<signed char>& orientations)
+  // reversed went through a collapse during the descent: it is collapsed (b1). `moved`: the
+  // lines that moved since their edges were last made by a reduction (see apply()), or empty
+  // if that is unknown (then the edges of every line are made again).
+  Reduction_counts run(const std::vector<signed char>& orientations, const std::vector<bool>& moved = {})
   {
+    remake_all_ = moved.empty();
+    moved_ = moved;
     reset();
     const std::size_t nv = w_.vertex_lines.size();
     degree_.assign(nv, 0);
@@ -434,17 +438,58 @@ private:
       }
       for(Index v = 0; v < vertex_lines.size(); ++v) if(removed[v]) vertex_lines[v].clear();
     }
+    const std::vector<bool> affected = affected_lines(new_line, lines.size());
     w_.lines = std::move(lines);
     w_.vertex_lines = std::move(vertex_lines);
-    w_.edges = rechain(old_edges);
+    w_.edges = rechain(old_edges, affected);
     remove_dangling_edges();
+    remake_all_ = false; // the edges of every line are made: none moved since
+    moved_.assign(w_.lines.size(), false);
   }
 
-  // The edges of every line, rebuilt from the union of the intervals its old edges cover:
-  // inside each union, consecutive points of the line (points on at least two lines, in the
-  // order along the line) are joined. Overlapping edges of merged lines become one chain and
-  // a point left on a single line disappears inside its chain.
-  std::vector<std::array<Index, 3>> rechain(const std::vector<std::array<Index, 3>>& old_edges) const
+  // The lines of the partition that apply() makes (numbered by `new_line`, `number_of_lines`
+  // of them) whose edges it must make again: the merged lines, the lines
+  // through a point that merged, was removed (b2) or lost an edge to a removed point, or has a
+  // line that merged or moved (its coordinates changed). The edges of the other lines are
+  // those rechain() would make: it made them for the same points at the same coordinates
+  // (when the reducer's first apply() follows a descent, the lines that did not move in it).
+  std::vector<bool> affected_lines(const std::vector<Index>& new_line, std::size_t number_of_lines)
+  {
+    const std::size_t nl = w_.lines.size(), nv = w_.vertex_lines.size();
+    std::vector<bool> affected(number_of_lines, remake_all_);
+    if(remake_all_) return affected;
+    std::vector<bool> merged_line(nl, false); // lines of a class of two or more (old numbering)
+    for(Index l = 0; l < nl; ++l) {
+      const Index r = find_line(l);
+      if(r != l) merged_line[l] = merged_line[r] = true;
+    }
+    std::vector<bool> merged_vertex(nv, false);
+    for(Index v = 0; v < nv; ++v) {
+      const Index r = find_vertex(v);
+      if(r != v) merged_vertex[v] = merged_vertex[r] = true;
+    }
+    for(Index l = 0; l < nl; ++l) if(merged_line[l]) affected[new_line[l]] = true;
+    for(Index v = 0; v < nv; ++v) {
+      const auto& lines = w_.vertex_lines[v];
+      const bool changed = merged_vertex[v] || removed_[v] ||
+                           std::any_of(lines.begin(), lines.end(), [&](Index l) { return merged_line[l] || moved_[l]; });
+      if(changed) for(Index l : lines) affected[new_line[l]] = true;
+    }
+    // the lines at the other end of an edge to a removed point: the point may lose them
+    for(const auto& e : w_.edges)
+      if(removed_[e[1]] || removed_[e[2]])
+        for(Index v : {e[1], e[2]})
+          for(Index l : w_.vertex_lines[v]) affected[new_line[l]] = true;
+    return affected;
+  }
+
+  // The edges of every `affected` line, rebuilt from the union of the intervals its old edges
+  // cover: inside each union, consecutive points of the line (points on at least two lines, in
+  // the order along the line) are joined. Overlapping edges of merged lines become one chain and
+  // a point left on a single line disappears inside its chain. The other lines keep their old
+  // edges.
+  std::vector<std::array<Index, 3>> rechain(const std::vector<std::array<Index, 3>>& old_edges,
+                                            const std::vector<bool>& affected) const
   {
     const std::size_t nl = w_.lines.size(), nv = w_.vertex_lines.size();
     std::vector<std::array<double, 2>> points(nv);
@@ -485,6 +530,14 @@ private:
     Union_find<Index> groups(nv);
     for(Index l = 0; l < nl; ++l) {
       const std::size_t first_of_line = edges.size();
+      if(!affected[l]) {
+        for(Index k = first_edge[l]; k < first_edge[l + 1]; ++k) {
+          const auto [u, v] = line_edges[k];
+          edges.push_back({l, std::min(u, v), std::max(u, v)});
+        }
+        std::sort(edges.begin() + first_of_line, edges.end());
+        continue;
+      }
       // Intervals with real points at both ends. A single-line point has no coordinates of its
       // own: it lies where the chain through it goes. Single-line points joined by edges form a
       // group (three or more lines merged in a row leave several in a row), and the real points
@@ -588,6 +641,8 @@ private:
   std::vector<Index> conflicts_;
   std::vector<bool> removed_; // points outside the disk (b2) that apply() removes with their edges
   std::vector<Index> degree_; // edges at each point before the first apply()
+  std::vector<bool> moved_;   // lines whose coordinates changed since their edges were made
+  bool remake_all_ = true;    // make the edges of every line again (which moved is not known)
   std::vector<std::vector<Index>> class_members_;  // lines of each class (at its root) in a pass
   std::vector<std::vector<Index>> vertex_members_; // points of each class (at its root) in a pass
 

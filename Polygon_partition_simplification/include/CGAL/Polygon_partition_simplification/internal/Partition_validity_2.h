@@ -21,9 +21,9 @@
 //    as with the faces of CGAL's arrangement of the edges, without building it.
 //
 // A caller that knows that some segments are pairwise free of crossings (the edges of a valid
-// state) passes `may_cross(a, b)`, false for the segment from a to b if it is one of them:
-// step 3 then only tests the pairs with an edge for which it is true (or that joins the same
-// two points as another edge).
+// state) only needs the pairs with an edge that is not one of them (or that joins the same two
+// points as another edge): crossing_edge_pairs() with `may_cross(a, b)` false for those, or
+// Crossing_free_edges (Crossing_free_edges_2.h), which keeps their grid from test to test.
 //
 // The predicates are those of `PK`, the exact predicates kernel of the geometric traits (double
 // coordinates, exact predicates); the exact fallback of the area of a walk is computed in `ET`,
@@ -76,10 +76,20 @@ public:
 
   bool contains(const std::array<double, 2>& p, const std::array<double, 2>& q) const
   {
+    return find(p, q) != First_value_map::no_value;
+  }
+
+  // the rank of insertion of the segment from p to q (either way round), or
+  // First_value_map::no_value if it is absent (or its digest was taken first by another one)
+  std::uint32_t find(const std::array<double, 2>& p, const std::array<double, 2>& q) const
+  {
     const std::array<double, 4> s = key(p, q);
     const std::uint32_t i = map_.find(digest(s));
-    return i != First_value_map::no_value && segments_[i] == s;
+    return i != First_value_map::no_value && segments_[i] == s ? i : First_value_map::no_value;
   }
+
+  std::size_t size() const { return segments_.size(); }
+  const std::array<double, 4>& segment(std::size_t i) const { return segments_[i]; }
 
 private:
   static std::array<double, 4> key(const std::array<double, 2>& p, const std::array<double, 2>& q)
@@ -145,6 +155,32 @@ struct Core_rectangle
   }
 };
 
+// Do the edges e and f ((u, v) point pairs, with `points` their coordinates, the ends of an
+// edge distinct points) meet elsewhere than at a common end? Decided with the exact predicates
+// of `PK`.
+template <class PK>
+bool edges_meet(const std::vector<std::array<double, 2>>& points, const std::array<std::size_t, 2>& e,
+                const std::array<std::size_t, 2>& f)
+{
+  using Point = typename PK::Point_2;
+  using Segment = typename PK::Segment_2;
+  auto point = [&](std::size_t v) { return Point(points[v][0], points[v][1]); };
+  std::size_t common = 0, shared = 0;
+  for(std::size_t a : e)
+    for(std::size_t b : f)
+      if(a == b) { ++common; shared = a; }
+  if(common == 0) return CGAL::do_intersect(Segment(point(e[0]), point(e[1])), Segment(point(f[0]), point(f[1])));
+  if(common == 2) return true;
+  // They share an end s and must not overlap, which they do exactly when they leave s in the
+  // same direction: collinear, with other ends on the same side of s. The side is tested first:
+  // consecutive edges along a line leave s in opposite directions, which the filtered sign of
+  // (oe - s).(of - s) decides at once, whereas their orientation, nearly zero, needs the exact
+  // arithmetic.
+  const Point s = point(shared);
+  const Point oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
+  return CGAL::angle(oe, s, of) == CGAL::ACUTE && CGAL::orientation(s, oe, of) == CGAL::COLLINEAR;
+}
+
 // The pairs of edges (indices into `edges`: (u, v) point pairs) that meet elsewhere than at a
 // common end, among the pairs with an edge for which `may_cross(a, b)` (its ends' coordinates)
 // is true; stops at a pair found (whichever the search meets first) unless `all`. `points`:
@@ -155,7 +191,6 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
                     const std::vector<std::array<std::size_t, 2>>& edges, bool all, const MayCross& may_cross)
 {
   using Point = typename PK::Point_2;
-  using Segment = typename PK::Segment_2;
   std::vector<std::pair<std::size_t, std::size_t>> result;
   if(edges.empty()) return result;
   auto point = [&](std::size_t v) { return Point(points[v][0], points[v][1]); };
@@ -183,24 +218,6 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
       if(first != e) suspect[first] = suspect[e] = true;
     }
   }
-  auto test = [&](std::size_t i, std::size_t j) {
-    const auto& e = edges[i];
-    const auto& f = edges[j];
-    std::size_t common = 0, shared = 0;
-    for(std::size_t a : e)
-      for(std::size_t b : f)
-        if(a == b) { ++common; shared = a; }
-    if(common == 0) return CGAL::do_intersect(Segment(point(e[0]), point(e[1])), Segment(point(f[0]), point(f[1])));
-    if(common == 2) return true;
-    // They share an end s and must not overlap, which they do exactly when they leave s in the
-    // same direction: collinear, with other ends on the same side of s. The side is tested first:
-    // consecutive edges along a line leave s in opposite directions, which the filtered sign of
-    // (oe - s).(of - s) decides at once, whereas their orientation, nearly zero, needs the exact
-    // arithmetic (the ends are distinct points: partition_defect checks it before).
-    const Point s = point(shared);
-    const Point oe = point(e[0] == shared ? e[1] : e[0]), of = point(f[0] == shared ? f[1] : f[0]);
-    return CGAL::angle(oe, s, of) == CGAL::ACUTE && CGAL::orientation(s, oe, of) == CGAL::COLLINEAR;
-  };
   // Two edges that meet share a point, which lies in a cell where both are listed: each suspect
   // inside the core is tested against the edges listed in its cells whose boxes meet its box
   // (once per pair); each edge outside the core directly (see Core_rectangle).
@@ -214,7 +231,8 @@ crossing_edge_pairs(const std::vector<std::array<double, 2>>& points,
     } else outside.push_back(e);
   }
   auto consider = [&](std::size_t i, std::size_t j) {
-    if(CGAL::do_overlap(boxes[i], boxes[j]) && test(i, j)) result.emplace_back(std::min(i, j), std::max(i, j));
+    if(CGAL::do_overlap(boxes[i], boxes[j]) && edges_meet<PK>(points, edges[i], edges[j]))
+      result.emplace_back(std::min(i, j), std::max(i, j));
   };
   const Segment_grid_2 grid(inside_segments, core.low, core.high);
   const std::size_t none = std::size_t(-1);
@@ -473,13 +491,29 @@ std::size_t number_of_bounded_faces(std::size_t number_of_points, const Edges& e
   return edges.size() + parts.number_of_sets() - number_of_points;
 }
 
+// The crossing test of partition_defect() with every pair of edges tested.
+template <class PK>
+struct All_crossing_pairs
+{
+  std::vector<std::pair<std::size_t, std::size_t>> operator()(const std::vector<std::array<double, 2>>& points,
+                                                              const std::vector<std::array<std::size_t, 2>>& ends,
+                                                              bool all) const
+  {
+    return crossing_edge_pairs<PK>(points, ends, all, [](const auto&, const auto&) { return true; });
+  }
+};
+
 // The first defect of a partition (empty if it is valid); with `defective`, the edges of all
 // defects of the first kind found (sorted, distinct). `View` gives number_of_lines(),
 // coefficients(l), number_of_vertices(), vertex_lines(v) (sorted indices), number_of_edges()
-// and edge(e) = {line, u, v}; `may_cross(a, b)`: see above. `GeomTraits`: a model of
-// `PolygonPartitionSimplificationTraits_2`, whose kernels give the predicates.
-template <class GeomTraits, class View, class MayCross>
-std::string partition_defect(const View& view, std::vector<std::size_t>* defective, const MayCross& may_cross)
+// and edge(e) = {line, u, v}. `crossing_pairs(points, ends, all)` returns the pairs of edges
+// ((u, v) point pairs) that meet elsewhere than at a common end, as crossing_edge_pairs() does
+// (all of them, or one if `all` is false); a caller that knows some edges to be free of
+// crossings may leave out the pairs of two of them (see crossing_edge_pairs() and
+// Crossing_free_edges). `GeomTraits`: a model of `PolygonPartitionSimplificationTraits_2`, whose
+// kernels give the predicates.
+template <class GeomTraits, class View, class CrossingPairs>
+std::string partition_defect(const View& view, std::vector<std::size_t>* defective, const CrossingPairs& crossing_pairs)
 {
   using PK = typename GeomTraits::Exact_predicates_kernel;
   using ET = Exact_number<typename GeomTraits::Exact_constructions_kernel>;
@@ -563,7 +597,7 @@ std::string partition_defect(const View& view, std::vector<std::size_t>* defecti
       }
   }
   if(!first.empty()) return finish(first); // the walks need distinct points
-  const auto crossings = crossing_edge_pairs<PK>(points, ends, defective != nullptr, may_cross);
+  const std::vector<std::pair<std::size_t, std::size_t>> crossings = crossing_pairs(points, ends, defective != nullptr);
   if(!crossings.empty()) {
     if(defective)
       for(const auto& [e, f] : crossings) { defective->push_back(e); defective->push_back(f); }

@@ -30,7 +30,7 @@ Round_reductions simplification_round(Working_partition& w, const std::vector<bo
 {
   const Working_partition start = w;
   const std::vector<Vector_3d> moved = descend(w, changed, s, iterations);
-  Round_reductions result = reduce_until_valid<GeomTraits>(w, start, moved, s.thresholds);
+  Round_reductions result = reduce_until_valid<GeomTraits>(w, start, moved, s.thresholds, changed.empty());
   // the next round starts with no line frozen and no record of the merges of this one
   for(auto& l : w.lines) { l.is_frozen = false; l.members.clear(); }
   return result;

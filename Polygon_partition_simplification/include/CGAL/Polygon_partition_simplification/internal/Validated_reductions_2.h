@@ -14,6 +14,7 @@
 // can be frozen, the round is undone: the partition is that of the start of the round, which is
 // valid. So every round ends with a valid partition.
 
+#include <CGAL/Polygon_partition_simplification/internal/Crossing_free_edges_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Partition_reductions_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
@@ -40,31 +41,33 @@ struct Round_reductions
 
 // The edges of the partition at the start of a round, which is valid, as the reductions need
 // them: the orientation of every edge along its line (the reductions collapse the edges that
-// the descent reversed), and the set of their ends' coordinates (an edge of a reduced partition
-// with the same ends crosses none of the others, so the crossing test can skip it).
+// the descent reversed), and the edges with their grid (an edge of a reduced partition with the
+// same ends as one of them crosses none of the others, so the crossing test of each attempt
+// only tests the other edges, against this grid built once).
 struct Round_start_edges
 {
   std::vector<signed char> orientations;
-  Segment_coordinate_set coordinates;
+  Crossing_free_edges crossing_free;
 
   explicit Round_start_edges(const Working_partition& start)
-    : orientations(start.edges.size()), coordinates(start.edges.size())
+    : orientations(start.edges.size()), crossing_free(segments(start, orientations))
+  {}
+
+private:
+  // the segments of the edges of `start`, with their orientations along their lines
+  static std::vector<std::array<double, 4>> segments(const Working_partition& start, std::vector<signed char>& orientations)
   {
     std::vector<std::array<double, 2>> points(start.vertex_lines.size()); // finite: `start` is valid
     for(Index v = 0; v < points.size(); ++v) points[v] = start.point(v);
+    std::vector<std::array<double, 4>> result(start.edges.size());
     for(std::size_t i = 0; i < start.edges.size(); ++i) {
       const auto& e = start.edges[i];
       const std::array<double, 2>& p = points[e[1]];
       const std::array<double, 2>& q = points[e[2]];
       orientations[i] = Partition_reducer::orientation_along(start.lines[e[0]].coefficients, p, q);
-      coordinates.insert(p, q);
+      result[i] = {{p[0], p[1], q[0], q[1]}};
     }
-  }
-
-  // may the segment from p to q cross another edge (for partition_defect())?
-  bool may_cross(const std::array<double, 2>& p, const std::array<double, 2>& q) const
-  {
-    return !coordinates.contains(p, q);
+    return result;
   }
 };
 
@@ -167,26 +170,38 @@ private:
   std::vector<std::vector<Index>> line_points_;
 };
 
+// The lines of `w` (an attempt's state before the reductions) whose coordinates differ from
+// those of `start`: the reducer makes the edges of the other lines again only around merges.
+inline std::vector<bool> moved_lines(const Working_partition& w, const Working_partition& start)
+{
+  std::vector<bool> result(w.lines.size());
+  for(Index l = 0; l < w.lines.size(); ++l) result[l] = w.lines[l].coefficients != start.lines[l].coefficients;
+  return result;
+}
+
 // The reductions of a round on `w`, from the round's start `start` (valid) and the coefficients
-// of its descent `moved`: attempts with more and more lines frozen until the result is valid and
+// of its descent `moved` (`first_round`: `start` is the input, whose edges the reducer makes
+// again everywhere): attempts with more and more lines frozen until the result is valid and
 // free of conflicts; `w` is that result, or `start` when the round is undone. The validity is
 // checked with the predicates of `GeomTraits` (see partition_defect()).
 template <class GeomTraits>
 Round_reductions reduce_until_valid(Working_partition& w, const Working_partition& start,
-                                           const std::vector<Vector_3d>& moved, const Reduction_thresholds& thresholds)
+                                           const std::vector<Vector_3d>& moved, const Reduction_thresholds& thresholds,
+                                           bool first_round)
 {
   Round_reductions result;
   const Round_start_edges start_edges(start);
-  auto may_cross = [&](const std::array<double, 2>& p, const std::array<double, 2>& q) {
-    return start_edges.may_cross(p, q);
+  auto crossing_pairs = [&](const std::vector<std::array<double, 2>>& points,
+                            const std::vector<std::array<std::size_t, 2>>& ends, bool all) {
+    return start_edges.crossing_free.crossing_pairs<typename GeomTraits::Exact_predicates_kernel>(points, ends, all);
   };
   Round_freezing freezing(start);
   for(;;) {
     moved_partition(w, start, moved, freezing.frozen());
     Partition_reducer reducer(w, thresholds);
-    result.counts = reducer.run(start_edges.orientations);
+    result.counts = reducer.run(start_edges.orientations, first_round ? std::vector<bool>() : moved_lines(w, start));
     std::vector<std::size_t> defective;
-    const std::string defect = partition_defect<GeomTraits>(Working_partition_view{w}, &defective, may_cross);
+    const std::string defect = partition_defect<GeomTraits>(Working_partition_view{w}, &defective, crossing_pairs);
     if(defect.empty() && reducer.conflicts().empty()) break;
     ++result.rejected_attempts;
     if(!freezing.freeze_after_rejection(w, reducer.conflicts(), defective)) {
