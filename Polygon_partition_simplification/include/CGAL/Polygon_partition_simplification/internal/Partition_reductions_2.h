@@ -438,7 +438,7 @@ private:
       }
       for(Index v = 0; v < vertex_lines.size(); ++v) if(removed[v]) vertex_lines[v].clear();
     }
-    const std::vector<bool> affected = affected_lines(new_line, lines.size());
+    const std::vector<bool> affected = affected_lines(new_line, new_vertex, removed, lines.size());
     w_.lines = std::move(lines);
     w_.vertex_lines = std::move(vertex_lines);
     w_.edges = rechain(old_edges, affected);
@@ -448,12 +448,13 @@ private:
   }
 
   // The lines of the partition that apply() makes (numbered by `new_line`, `number_of_lines`
-  // of them) whose edges it must make again: the merged lines, the lines
+  // of them, with the points numbered by `new_vertex`, `removed` those removed in case (b2)) whose edges it must make again: the merged lines, the lines
   // through a point that merged, was removed (b2) or lost an edge to a removed point, or has a
   // line that merged or moved (its coordinates changed). The edges of the other lines are
   // those rechain() would make: it made them for the same points at the same coordinates
   // (when the reducer's first apply() follows a descent, the lines that did not move in it).
-  std::vector<bool> affected_lines(const std::vector<Index>& new_line, std::size_t number_of_lines)
+  std::vector<bool> affected_lines(const std::vector<Index>& new_line, const std::vector<Index>& new_vertex,
+                                   const std::vector<bool>& removed, std::size_t number_of_lines)
   {
     const std::size_t nl = w_.lines.size(), nv = w_.vertex_lines.size();
     std::vector<bool> affected(number_of_lines, remake_all_);
@@ -471,13 +472,14 @@ private:
     for(Index l = 0; l < nl; ++l) if(merged_line[l]) affected[new_line[l]] = true;
     for(Index v = 0; v < nv; ++v) {
       const auto& lines = w_.vertex_lines[v];
-      const bool changed = merged_vertex[v] || removed_[v] ||
+      const bool changed = merged_vertex[v] || removed[new_vertex[v]] ||
                            std::any_of(lines.begin(), lines.end(), [&](Index l) { return merged_line[l] || moved_[l]; });
       if(changed) for(Index l : lines) affected[new_line[l]] = true;
     }
-    // the lines at the other end of an edge to a removed point: the point may lose them
+    // the lines at the other end of an edge to a removed point (or to a point merged with one):
+    // the point may lose them
     for(const auto& e : w_.edges)
-      if(removed_[e[1]] || removed_[e[2]])
+      if(removed[new_vertex[e[1]]] || removed[new_vertex[e[2]]])
         for(Index v : {e[1], e[2]})
           for(Index l : w_.vertex_lines[v]) affected[new_line[l]] = true;
     return affected;
