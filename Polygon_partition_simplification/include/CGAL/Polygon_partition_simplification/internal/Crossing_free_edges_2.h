@@ -51,9 +51,6 @@ public:
     grid_ = Segment_grid_2(inside_segments, core_.low, core_.high);
   }
 
-  // is the segment from p to q (either way round) one of the reference edges?
-  bool contains(const std::array<double, 2>& p, const std::array<double, 2>& q) const { return coordinates_.contains(p, q); }
-
   // The pairs of edges ((u, v) point pairs with coordinates `points`) that meet elsewhere than at
   // a common end, among the pairs with a suspect: an edge that is not a reference edge, or that
   // joins the same two points as another edge (sorted; one pair at most unless `all`).

@@ -448,11 +448,12 @@ private:
   }
 
   // The lines of the partition that apply() makes (numbered by `new_line`, `number_of_lines`
-  // of them, with the points numbered by `new_vertex`, `removed` those removed in case (b2)) whose edges it must make again: the merged lines, the lines
-  // through a point that merged, was removed (b2) or lost an edge to a removed point, or has a
-  // line that merged or moved (its coordinates changed). The edges of the other lines are
-  // those rechain() would make: it made them for the same points at the same coordinates
-  // (when the reducer's first apply() follows a descent, the lines that did not move in it).
+  // of them; its points numbered by `new_vertex`, `removed` those removed in case (b2)) whose
+  // edges it must make again: the merged lines, the lines through a point that merged, was
+  // removed or lost an edge to a removed point, or has a line that merged or moved (its
+  // coordinates changed). The edges of the other lines are those rechain() would make: it made
+  // them for the same points at the same coordinates (when the reducer's first apply() follows
+  // a descent, the lines that did not move in it).
   std::vector<bool> affected_lines(const std::vector<Index>& new_line, const std::vector<Index>& new_vertex,
                                    const std::vector<bool>& removed, std::size_t number_of_lines)
   {
