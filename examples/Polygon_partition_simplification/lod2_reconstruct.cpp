@@ -93,13 +93,15 @@ int main(int argc, char** argv)
   CLI::App app{"LOD2 building models from a point cloud (planes, segments, kinetic partition, simplification, lift)"};
   std::string input, output, planes = "detect";
   double lambda1 = 0.5, lambda2 = 5, epsilon = 0;
-  bool json = false;
+  bool json = false, walls_at_eaves = false;
   app.add_option("INPUT", input, "points: .ply, .xyz or .off")->required();
   app.add_option("OUTPUT", output, "model: .off, .ply, .obj, or .city.json (CityJSON 1.1)")->required();
   app.add_option("--planes", planes, "detect (region growing, default) or the name of an int point property giving the plane of each point");
   app.add_option("--lambda1", lambda1, "weight of the concurrency term of the simplification, default 0.5");
   app.add_option("--lambda2", lambda2, "weight of the orthogonality term, default 5");
   app.add_option("--epsilon", epsilon, "longest edge to collapse in the simplification, input units (default: 1% of the half-diagonal)");
+  app.add_flag("--walls-at-eaves", walls_at_eaves,
+               "put the walls at the edges of the roofs, as seen from above (default: on the facades, where facade points show them)");
   app.add_flag("--json", json, "print one line of JSON statistics");
   CLI11_PARSE(app, argc, argv);
   try {
@@ -107,7 +109,8 @@ int main(int argc, char** argv)
       throw std::runtime_error("OUTPUT must end in .off, .ply, .obj or .city.json: " + output);
     const Point_set points = read_points(input);
     Mesh model;
-    const auto np = PPS::parameters::concurrency_weight(lambda1, PPS::parameters::orthogonality_weight(lambda2));
+    const auto np = PPS::parameters::concurrency_weight(
+      lambda1, PPS::parameters::orthogonality_weight(lambda2, PPS::parameters::walls_at_facades(!walls_at_eaves)));
     const PPS::LOD2_report report = epsilon > 0 ? reconstruct(points, planes, model, PPS::parameters::collapse_distance(epsilon, np))
                                                 : reconstruct(points, planes, model, np);
     write_model(model, output);

@@ -7,7 +7,9 @@
 // buildings on one ground. The truth of a building is a closed, outward-oriented polygon mesh
 // (roofs, walls, floor on z = 0). Points are sampled uniformly on the roofs and on the ground
 // around the buildings, at a lower density on the walls (an airborne scanner sees them
-// poorly), and moved along the normal of the true surface by Gaussian noise. The samples
+// poorly), and moved along the normal of the true surface by Gaussian noise. Flat roofs can
+// overhang their walls (eaves, sampled as the roof but not part of the truth, whose walls
+// stand on the footprints as LOD2 models' do). The samples
 // depend only on the seed: the uniform and normal variates are made here from std::mt19937,
 // whose output the standard fixes, not by the library's distributions, which it does not.
 // Also: distances of points to a mesh and between two meshes both ways (sampled Hausdorff).
@@ -27,6 +29,7 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -102,6 +105,7 @@ struct Sampling_options
   double density = 20;              // points per square meter on the roofs and the ground
   double wall_density_factor = 0.1; // wall density relative to it: 1 (as the roofs), 0.1 (sparse), 0 (none)
   double noise = 0.05;              // standard deviation of the displacement along the normal (m)
+  double eave_overhang = 0;         // width of the eaves of the flat roofs beyond the walls (sampled, not in the truth)
   unsigned seed = 1;
 };
 
@@ -287,6 +291,24 @@ inline void sample_polygon(const std::vector<Point_3>& polygon, const std::vecto
   }
 }
 
+// The counterclockwise polygon whose edges are those of `polygon` moved outwards by `width`.
+inline std::vector<Point_2> offset_polygon(const std::vector<Point_2>& polygon, double width)
+{
+  const std::size_t n = polygon.size();
+  auto outward = [&](std::size_t i) {
+    const Point_2 &p = polygon[i % n], &q = polygon[(i + 1) % n];
+    const double dx = q.x() - p.x(), dy = q.y() - p.y(), length = std::hypot(dx, dy);
+    return std::array<double, 2>{{dy / length, -dx / length}};
+  };
+  std::vector<Point_2> result;
+  for(std::size_t i = 0; i < n; ++i) {
+    const auto a = outward(i + n - 1), b = outward(i);
+    const double scale = width / (1 + a[0] * b[0] + a[1] * b[1]);
+    result.emplace_back(polygon[i].x() + scale * (a[0] + b[0]), polygon[i].y() + scale * (a[1] + b[1]));
+  }
+  return result;
+}
+
 inline std::vector<Point_3> ground_polygon(const Scene& scene)
 {
   std::vector<Point_3> polygon;
@@ -353,19 +375,60 @@ inline Scene make_scene(Scene_kind kind)
   return scene;
 }
 
-/// Points of the ground (plane index 0, not under the buildings), the roofs and the walls.
+namespace internal {
+
+// The eaves of the flat roofs of a building: each flat roof's outline and that outline moved
+// outwards by `overhang`, at the roof's height.
+struct Eave
+{
+  std::vector<Point_2> outline;
+  std::vector<Point_3> outer;
+  int plane_index;
+};
+
+inline std::vector<Eave> eaves(const Scene& scene, double overhang)
+{
+  std::vector<Eave> result;
+  for(const Building& building : scene.buildings)
+    for(const Planar_face& face : building.faces) {
+      const double z = face.vertices.front().z();
+      const bool flat = std::all_of(face.vertices.begin(), face.vertices.end(), [z](const Point_3& p) { return p.z() == z; });
+      if(face.role != ROOF || !flat || !(overhang > 0)) continue;
+      Eave eave{{}, {}, face.plane_index};
+      for(const Point_3& p : face.vertices) eave.outline.emplace_back(p.x(), p.y());
+      for(const Point_2& p : offset_polygon(eave.outline, overhang)) eave.outer.push_back(lift(p, z));
+      result.push_back(eave);
+    }
+  return result;
+}
+
+} // namespace internal
+
+/// Points of the ground (plane index 0, not under the buildings or their eaves), the roofs, the
+/// eaves and the walls.
 inline std::vector<Sample> sample_scene(const Scene& scene, const Sampling_options& options = {})
 {
   std::mt19937 random(options.seed);
   std::vector<Sample> samples;
-  std::vector<std::vector<Point_2>> footprints;
-  for(const Building& building : scene.buildings) footprints.push_back(building.footprint);
-  internal::sample_polygon(internal::ground_polygon(scene), footprints, options.density, 0, options.noise, random, samples);
+  const std::vector<internal::Eave> eaves = internal::eaves(scene, options.eave_overhang);
+  // the ground is hidden by the footprints and the eaves (a footprint inside an eave that
+  // hides it is left out, so that the area of the holes counts it once)
+  std::vector<std::vector<Point_2>> hidden;
+  for(const internal::Eave& eave : eaves) {
+    hidden.emplace_back();
+    for(const Point_3& p : eave.outer) hidden.back().emplace_back(p.x(), p.y());
+  }
+  for(const Building& building : scene.buildings)
+    if(std::none_of(eaves.begin(), eaves.end(), [&](const internal::Eave& e) { return e.outline == building.footprint; }))
+      hidden.push_back(building.footprint);
+  internal::sample_polygon(internal::ground_polygon(scene), hidden, options.density, 0, options.noise, random, samples);
   for(const Building& building : scene.buildings)
     for(const Planar_face& face : building.faces)
       if(face.role != FLOOR)
         internal::sample_polygon(face.vertices, {}, options.density * (face.role == WALL ? options.wall_density_factor : 1),
                                  face.plane_index, options.noise, random, samples);
+  for(const internal::Eave& eave : eaves)
+    internal::sample_polygon(eave.outer, {eave.outline}, options.density, eave.plane_index, options.noise, random, samples);
   return samples;
 }
 

@@ -14,6 +14,10 @@
 //   Surface_mesh, CGAL's is_closed, is_outward_oriented and the volume of its triangulation);
 //   missing property maps, bad precision and non-finite coordinates throw Input_error and write
 //   nothing; the output does not depend on the locale.
+// - internal::facade_free_space, on hand-made facades: the outside is the side without the roof
+//   (with an overhanging eave on it, or a lower roof), whatever the sign of the plane's normal;
+//   the samples lie on the outward horizontal from each point's projection on the plane, at
+//   multiples of the step and at the point's height; a wall that carries no roof gives none.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -22,6 +26,7 @@
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_free_space_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/alpha_expansion_graphcut.h>
@@ -682,6 +687,76 @@ void test_CityJSON()
   }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Free space in front of facades
+
+namespace free_space {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Planes = PPS::Building_planes_3<K>;
+
+struct Scene
+{
+  std::vector<K::Point_3> points;
+  Planes planes;
+
+  // a plane whose inliers are the points (x, y, z) of a grid of step 0.25 on the given ranges
+  void add(const K::Plane_3& plane, bool vertical, std::array<double, 2> xs, std::array<double, 2> ys,
+           std::array<double, 2> zs, double jitter = 0)
+  {
+    PPS::Building_plane_3<K> p;
+    p.plane = plane;
+    p.is_vertical = vertical;
+    std::mt19937 random(unsigned(points.size()));
+    std::uniform_real_distribution<double> noise(-jitter, jitter);
+    for(double x = xs[0]; x <= xs[1] + 1e-9; x += 0.25)
+      for(double y = ys[0]; y <= ys[1] + 1e-9; y += 0.25)
+        for(double z = zs[0]; z <= zs[1] + 1e-9; z += 0.25) {
+          p.inliers.push_back(points.size());
+          points.emplace_back(x + (vertical ? noise(random) : 0), y, z);
+        }
+    planes.planes.push_back(p);
+  }
+};
+
+// a flat roof at 10 over [0, 10] x [0, 10], with an eave of 1 m beyond x = 10, and the facade
+// x = 10 (its plane given with either normal) carrying it; with `lower_roof`, a roof at 4 over
+// [10, 20] x [0, 10] in front of the facade, which then goes from 4 to 10
+Scene box(bool normal_outwards, bool lower_roof, bool roof = true)
+{
+  Scene scene;
+  scene.add(K::Plane_3(0, 0, 1, 0), false, {-5, 25}, {-5, 15}, {0, 0}); // the ground
+  scene.planes.ground = 0;
+  if(roof) scene.add(K::Plane_3(0, 0, 1, -10), false, {0, 11}, {0, 10}, {10, 10});
+  if(lower_roof) scene.add(K::Plane_3(0, 0, 1, -4), false, {11.25, 20}, {0, 10}, {4, 4});
+  const K::Plane_3 facade = normal_outwards ? K::Plane_3(1, 0, 0, -10) : K::Plane_3(-1, 0, 0, 10);
+  scene.add(facade, true, {10, 10}, {0, 10}, {lower_roof ? 4. : 0., 10}, 0.05);
+  return scene;
+}
+
+void test_facade_free_space()
+{
+  const double step = 0.3;
+  for(bool normal_outwards : {true, false})
+    for(bool lower_roof : {false, true}) {
+      const Scene scene = box(normal_outwards, lower_roof);
+      const auto samples = PPS::internal::facade_free_space<K>(scene.points, scene.planes, step, 2);
+      const auto& facade = scene.planes.planes.back().inliers;
+      CHECK(samples.size() == 2 * facade.size());
+      for(std::size_t i = 0; i < facade.size(); ++i)
+        for(std::size_t k = 0; k < 2; ++k) {
+          const auto& p = scene.points[facade[i]];
+          const auto& q = samples[2 * i + k];
+          CHECK(std::abs(q[0] - (10 + double(k + 1) * step)) < 1e-9); // outwards, from the plane
+          CHECK(q[1] == p.y() && q[2] == p.z());
+        }
+    }
+  const Scene lone_wall = box(true, false, false);
+  CHECK(PPS::internal::facade_free_space<K>(lone_wall.points, lone_wall.planes, step, 2).empty());
+}
+
+} // namespace free_space
+
 int main()
 {
   test_alpha_expansion_against_brute_force();
@@ -689,6 +764,7 @@ int main()
   test_alpha_expansion_special_cases();
   test_alpha_expansion_on_a_grid();
   test_CityJSON();
+  free_space::test_facade_free_space();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;
 }

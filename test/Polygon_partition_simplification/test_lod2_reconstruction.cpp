@@ -1,8 +1,9 @@
 // Tests of the LOD2 pipeline (lod2_building_reconstruction): synthetic buildings whose true
 // model is known, sampled as aerial LiDAR (sparse or missing walls, noise), with the planes
 // given and detected; CGAL's points_3/building.ply; properties of the model (closed, bounds a
-// volume, roofs up, walls vertical, floors down on the ground); independence of the order of
-// the points; bad input.
+// volume, roofs up, walls vertical, floors down on the ground); walls on the facades under
+// overhanging eaves (or at the eaves' edges when asked); independence of the order of the
+// points; bad input.
 
 #include "synthetic_buildings.h"
 
@@ -69,18 +70,22 @@ struct Expected
   double maximum; // both ways, bound on the largest distance
 };
 
-static void test_scene(T::Scene_kind kind, double wall_density, bool detect, const Expected& expected)
+static T::Two_way_distances test_scene(T::Scene_kind kind, double wall_density, bool detect, const Expected& expected,
+                                       double eave_overhang = 0, bool walls_at_facades = true)
 {
   const T::Scene scene = T::make_scene(kind);
   T::Sampling_options options;
   options.wall_density_factor = wall_density;
+  options.eave_overhang = eave_overhang;
   const std::vector<T::Sample> samples = T::sample_scene(scene, options);
   const std::string name = scene.name + (detect ? " (detected planes" : " (given planes") + ", walls x" +
-                           std::to_string(wall_density) + ")";
+                           std::to_string(wall_density) + (eave_overhang > 0 ? ", eaves " + std::to_string(eave_overhang) + " m" : "") +
+                           (walls_at_facades ? ")" : ", walls at the eaves)");
   Mesh model;
+  const auto np = PPS::parameters::walls_at_facades(walls_at_facades, sample_maps());
   const PPS::LOD2_report report =
-    detect ? CGAL::lod2_building_reconstruction(samples, model, sample_maps())
-           : CGAL::lod2_building_reconstruction(samples, model, sample_maps().plane_index_map(T::Sample_plane_index_map()));
+    detect ? CGAL::lod2_building_reconstruction(samples, model, np)
+           : CGAL::lod2_building_reconstruction(samples, model, np.plane_index_map(T::Sample_plane_index_map()));
   const T::Two_way_distances d = T::two_way_distances(model, T::scene_mesh(scene));
   std::cout << name << ": " << report.planes << " planes, " << report.segments << " segments, cells "
             << report.cells_before << " -> " << report.cells_after << ", " << report.buildings << " buildings, "
@@ -94,6 +99,7 @@ static void test_scene(T::Scene_kind kind, double wall_density, bool detect, con
   CHECK(d.truth_to_model.rms < expected.rms && d.model_to_truth.rms < expected.rms, name << ": RMS distances");
   CHECK(d.truth_to_model.max < expected.maximum && d.model_to_truth.max < expected.maximum, name << ": largest distances");
   check_faces(model, 0, name);
+  return d;
 }
 
 // the same points in another order give the same model (same faces, same corners)
@@ -207,6 +213,14 @@ int main(int argc, char** argv)
     test_scene(K::L_SHAPED_FLAT_ROOF, 0, detect, {1, 0.15, 0.5});
     // the outlines of the two roofs meet at the step (no intersection line between them)
     test_scene(K::TWO_HEIGHT_FLAT_ROOFS, 0, detect, {1, 0.15, 0.5});
+    // eaves 1 m beyond the walls: the walls stand on the facades, where the free space in
+    // front of the facade points puts them, not at the edges of the roofs
+    test_scene(K::L_SHAPED_FLAT_ROOF, 1, detect, {1, 0.05, 0.3}, 1);
+    test_scene(K::L_SHAPED_FLAT_ROOF, 0.1, detect, {1, 0.05, 0.3}, 1);
+    // without it, the walls stand at the edges of the eaves, 1 m out (the scene tells the two apart)
+    const T::Two_way_distances at_eaves =
+      test_scene(K::L_SHAPED_FLAT_ROOF, 1, detect, {1, 1, 2}, 1, false);
+    CHECK(at_eaves.model_to_truth.max > 0.8, "walls_at_facades(false): the walls are at the eaves");
   }
   test_scene(K::SEVERAL_BUILDINGS, 0.1, false, {5, 0.05, 0.3});
   test_scene(K::SEVERAL_BUILDINGS, 0, true, {5, 0.15, 0.6});

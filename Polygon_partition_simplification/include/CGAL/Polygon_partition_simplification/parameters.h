@@ -36,6 +36,7 @@ enum facade_weight_t { facade_weight };
 enum minimum_building_height_t { minimum_building_height };
 enum height_tolerance_t { height_tolerance };
 enum remove_far_points_t { remove_far_points };
+enum walls_at_facades_t { walls_at_facades };
 
 } // namespace internal_np
 
@@ -100,6 +101,8 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(minimum_building_height)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(height_tolerance)
 /// case (b2) of the thesis: remove a point sent outside the disk of the partition with its edges
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(remove_far_points)
+/// the lift keeps roofs from overhanging the facades, using the free space seen in front of them
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(walls_at_facades)
 
 #undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER
 

@@ -113,6 +113,7 @@ struct LOD2_input
     settings.lift.facade_weight = choose_parameter(get_parameter(np, pps_np::facade_weight), 0.25);
     settings.lift.minimum_building_height = choose_parameter(get_parameter(np, pps_np::minimum_building_height), 0.);
     settings.height_tolerance = choose_parameter(get_parameter(np, pps_np::height_tolerance), 0.);
+    if(!choose_parameter(get_parameter(np, pps_np::walls_at_facades), true)) settings.lift.free_space_samples = 0;
     check_settings();
   }
 
@@ -229,18 +230,24 @@ void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const
   for(const auto& plane : planes.planes)
     if(plane.is_vertical)
       for(std::size_t i : plane.inliers) on_facade[i] = true;
-  std::vector<std::array<double, 3>> lifted;
+  Lift_evidence evidence;
   for(std::size_t i = 0; i < points.size(); ++i)
     if(!on_facade[i])
-      lifted.push_back({{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}});
+      evidence.points.push_back(
+        {{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}});
+  evidence.cell_of_point = arrangement.locate(evidence.points);
+  if(settings.lift.free_space_samples > 0) {
+    evidence.free_space =
+      facade_free_space<Kernel>(points, planes, settings.lift.facade_distance, settings.lift.free_space_samples);
+    evidence.cell_of_free_space = arrangement.locate(evidence.free_space);
+  }
   std::vector<typename Kernel::Segment_2> facades;
   for(const auto& s : segments)
     if(s.is_facade) facades.push_back(s.segment);
   const Height_functions heights(planes);
   const std::vector<Lift_edge> edges = lift_edges(arrangement, facades, settings.lift);
   const std::vector<std::size_t> labels =
-    label_cells(arrangement, edges, lift_data_term(arrangement, lifted, arrangement.locate(lifted), heights, settings.lift),
-                heights);
+    label_cells(arrangement, edges, lift_data_term(arrangement, evidence, heights, settings.lift), heights);
   report.lift_seconds = timer.time();
   timer.reset();
   Building_extrusion_3 extrusion(arrangement, labels, heights, settings.height_tolerance);
