@@ -14,10 +14,11 @@
 //   Surface_mesh, CGAL's is_closed, is_outward_oriented and the volume of its triangulation);
 //   missing property maps, bad precision and non-finite coordinates throw Input_error and write
 //   nothing; the output does not depend on the locale.
-// - internal::facade_free_space, on hand-made facades: the outside is the side without the roof
+// - internal::facade_evidence, on hand-made facades: the outside is the side without the roof
 //   (with an overhanging eave on it, or a lower roof), whatever the sign of the plane's normal;
-//   the samples lie on the outward horizontal from each point's projection on the plane, at
-//   multiples of the step and at the point's height; a wall that carries no roof gives none.
+//   the samples lie on the horizontal through each point's projection on the plane, at
+//   multiples of the step outwards and inwards, at the point's height; a wall that carries no
+//   roof gives none.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -26,7 +27,7 @@
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
-#include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_free_space_3.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/alpha_expansion_graphcut.h>
@@ -690,7 +691,7 @@ void test_CityJSON()
 // ---------------------------------------------------------------------------------------------
 // Free space in front of facades
 
-namespace free_space {
+namespace facade_evidence {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Planes = PPS::Building_planes_3<K>;
@@ -734,28 +735,31 @@ Scene box(bool normal_outwards, bool lower_roof, bool roof = true)
   return scene;
 }
 
-void test_facade_free_space()
+void test_facade_evidence()
 {
   const double step = 0.3;
   for(bool normal_outwards : {true, false})
     for(bool lower_roof : {false, true}) {
       const Scene scene = box(normal_outwards, lower_roof);
-      const auto samples = PPS::internal::facade_free_space<K>(scene.points, scene.planes, step, 2);
+      const auto samples = PPS::internal::facade_evidence<K>(scene.points, scene.planes, step, 2);
       const auto& facade = scene.planes.planes.back().inliers;
-      CHECK(samples.size() == 2 * facade.size());
+      CHECK(samples.in_front.size() == 2 * facade.size() && samples.behind.size() == 2 * facade.size());
       for(std::size_t i = 0; i < facade.size(); ++i)
         for(std::size_t k = 0; k < 2; ++k) {
           const auto& p = scene.points[facade[i]];
-          const auto& q = samples[2 * i + k];
-          CHECK(std::abs(q[0] - (10 + double(k + 1) * step)) < 1e-9); // outwards, from the plane
-          CHECK(q[1] == p.y() && q[2] == p.z());
+          const auto& front = samples.in_front[2 * i + k];
+          const auto& back = samples.behind[2 * i + k];
+          CHECK(std::abs(front[0] - (10 + double(k + 1) * step)) < 1e-9); // outwards, from the plane
+          CHECK(std::abs(back[0] - (10 - double(k + 1) * step)) < 1e-9);
+          CHECK(front[1] == p.y() && front[2] == p.z() && back[1] == p.y() && back[2] == p.z());
         }
     }
   const Scene lone_wall = box(true, false, false);
-  CHECK(PPS::internal::facade_free_space<K>(lone_wall.points, lone_wall.planes, step, 2).empty());
+  const auto none = PPS::internal::facade_evidence<K>(lone_wall.points, lone_wall.planes, step, 2);
+  CHECK(none.in_front.empty() && none.behind.empty());
 }
 
-} // namespace free_space
+} // namespace facade_evidence
 
 int main()
 {
@@ -764,7 +768,7 @@ int main()
   test_alpha_expansion_special_cases();
   test_alpha_expansion_on_a_grid();
   test_CityJSON();
-  free_space::test_facade_free_space();
+  facade_evidence::test_facade_evidence();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;
 }

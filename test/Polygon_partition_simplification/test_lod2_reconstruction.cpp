@@ -213,8 +213,8 @@ int main(int argc, char** argv)
     test_scene(K::L_SHAPED_FLAT_ROOF, 0, detect, {1, 0.15, 0.5});
     // the outlines of the two roofs meet at the step (no intersection line between them)
     test_scene(K::TWO_HEIGHT_FLAT_ROOFS, 0, detect, {1, 0.15, 0.5});
-    // eaves 1 m beyond the walls: the walls stand on the facades, where the free space in
-    // front of the facade points puts them, not at the edges of the roofs
+    // eaves 1 m beyond the walls: the walls stand on the facades, where the samples in front of and
+    // behind the facade points put them, not at the edges of the roofs
     test_scene(K::L_SHAPED_FLAT_ROOF, 1, detect, {1, 0.05, 0.3}, 1);
     test_scene(K::L_SHAPED_FLAT_ROOF, 0.1, detect, {1, 0.05, 0.3}, 1);
     // without it, the walls stand at the edges of the eaves, 1 m out (the scene tells the two apart)

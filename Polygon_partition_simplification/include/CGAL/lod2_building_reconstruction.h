@@ -90,14 +90,15 @@ segment and 1 elsewhere. A cell without points costs nothing as ground and
 \f$\epsilon A_C\f$ as roof. A roof plane less than `minimum_building_height` above the ground at
 a corner of a cell is not a label of that cell. The outside of the partition is ground.
 
-<b>Free space in front of the facades</b> (with `walls_at_facades`, beyond the thesis, whose
-data term sees the points from above, so that a roof overhanging its facade pulls the wall to
-the roof's edge). Every point of a vertical plane gives two samples \f$q\f$ on the horizontal
-ray from its projection on the plane, outwards, at once and twice `maximum_distance`, at the
-point's height; they enter \f$E_C\f$ as points do, each costing
-\f$\min(\epsilon, \max(0, \Pi(q_x, q_y) - q_z))\f$: a roof above a place where the scanner saw
-through. The outside of a facade is its side with fewer roof points above its mid-height within
-its height of it (normals are not used).
+<b>Facades</b> (with `walls_at_facades`, beyond the thesis, whose data term sees the points
+from above, so that a roof overhanging its facade pulls the wall to the roof's edge). A facade
+point at height \f$z\f$ is on a wall of a 2.5D model when the model is lower than \f$z\f$ in
+front of the facade and at least \f$z\f$ behind it. Every point of a vertical plane gives two
+samples \f$q\f$ on the horizontal ray from its projection on the plane, outwards, at once and
+twice `maximum_distance`, and two on the ray inwards, at the point's height; they enter
+\f$E_C\f$ as points do, a sample in front costing \f$\min(\epsilon, \max(0, \Pi(q_x, q_y) - q_z))\f$
+and one behind \f$\min(\epsilon, \max(0, q_z - \Pi(q_x, q_y)))\f$. The outside of a facade is its
+side with fewer roof points above its mid-height within its height of it (normals are not used).
 
 <b>Extrusion</b>. Cells of one label are merged; each connected set of roof cells is one
 building: its roofs (the cells at their plane's height), walls between two heights or down to
@@ -164,8 +165,8 @@ in the planes of `detect_building_planes_3()`, `std::size_t(-1)` for walls and f
     \cgalParamDefault{0.25}
   \cgalParamNEnd
   \cgalParamNBegin{walls_at_facades}
-    \cgalParamDescription{if `true`, the free space seen in front of the facade points keeps
-                          the roofs from overhanging them, so the walls stand on the facades;
+    \cgalParamDescription{if `true`, the facade points tell the lift where the walls are (lower
+                          in front of them, higher behind), so the walls stand on the facades;
                           if `false`, the lift sees the points from above only (as the thesis),
                           and walls stand at the roofs' edges}
     \cgalParamDefault{`true`}

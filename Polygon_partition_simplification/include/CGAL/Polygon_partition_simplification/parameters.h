@@ -101,7 +101,7 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(minimum_building_height)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(height_tolerance)
 /// case (b2) of the thesis: remove a point sent outside the disk of the partition with its edges
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(remove_far_points)
-/// the lift keeps roofs from overhanging the facades, using the free space seen in front of them
+/// the lift puts the walls on the facades whose points were seen (not at the edges of overhanging roofs)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(walls_at_facades)
 
 #undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER

@@ -7,12 +7,14 @@
 #include <CGAL/license/Polygon_partition_simplification.h>
 
 #include <CGAL/Arr_extended_dcel.h>
-#include <CGAL/Arr_landmarks_point_location.h>
+#include <CGAL/Arr_batched_point_location.h>
 #include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -80,33 +82,48 @@ struct Cell_arrangement_2
 
   /// the cell of each point (x, y, z) of `points`, `no_cell` outside every cell; a point on an edge
   /// or a vertex goes to a cell incident to it (the face of the edge's halfedge directed from
-  /// the smaller endpoint, the first cell found around the vertex)
+  /// the smaller endpoint, the first cell found around the vertex). All the points are located
+  /// in one plane sweep (CGAL's batched point location), which costs O((n + m) log(n + m)) for n
+  /// points and m edges, where a walk from the nearest landmark per point cost more on points
+  /// near the edges, as the samples of the facades are.
   std::vector<std::size_t> locate(const std::vector<std::array<double, 3>>& points) const
   {
-    CGAL::Arr_landmarks_point_location<Arrangement> locator(arrangement);
+    using Location = typename CGAL::Arr_point_location_result<Arrangement>::Type;
+    std::vector<Point_2> queries;
+    queries.reserve(points.size());
+    for(const auto& p : points) queries.emplace_back(p[0], p[1]);
+    std::vector<std::pair<Point_2, Location>> located;
+    located.reserve(points.size());
+    CGAL::locate(arrangement, queries.begin(), queries.end(), std::back_inserter(located));
+    auto by_point = [](const std::pair<Point_2, Location>& a, const std::pair<Point_2, Location>& b) { return a.first < b.first; };
+    std::sort(located.begin(), located.end(), by_point);
     std::vector<std::size_t> result;
     result.reserve(points.size());
-    for(const auto& p : points) {
-      const auto where = locator.locate(Point_2(p[0], p[1]));
-      std::size_t cell = no_cell;
-      if(const auto* face = boost::get<typename Arrangement::Face_const_handle>(&where)) {
-        cell = (*face)->data();
-      } else if(const auto* edge = boost::get<typename Arrangement::Halfedge_const_handle>(&where)) {
-        auto h = *edge;
-        if(h->source()->point() > h->target()->point()) h = h->twin();
-        cell = h->face()->data() != no_cell ? h->face()->data() : h->twin()->face()->data();
-      } else if(const auto* vertex = boost::get<typename Arrangement::Vertex_const_handle>(&where)) {
-        auto around = (*vertex)->incident_halfedges(), start = around;
-        if(!(*vertex)->is_isolated()) do {
-            if(around->face()->data() != no_cell) {
-              cell = around->face()->data();
-              break;
-            }
-          } while(++around != start);
-      }
-      result.push_back(cell);
+    for(const Point_2& q : queries) {
+      const auto found = std::lower_bound(located.begin(), located.end(), std::make_pair(q, Location()), by_point);
+      result.push_back(found != located.end() && found->first == q ? cell_at(found->second) : no_cell);
     }
     return result;
+  }
+
+private:
+  template <class Location>
+  static std::size_t cell_at(const Location& where)
+  {
+    if(const auto* face = boost::get<typename Arrangement::Face_const_handle>(&where)) return (*face)->data();
+    if(const auto* edge = boost::get<typename Arrangement::Halfedge_const_handle>(&where)) {
+      auto h = *edge;
+      if(h->source()->point() > h->target()->point()) h = h->twin();
+      return h->face()->data() != no_cell ? h->face()->data() : h->twin()->face()->data();
+    }
+    if(const auto* vertex = boost::get<typename Arrangement::Vertex_const_handle>(&where)) {
+      if((*vertex)->is_isolated()) return no_cell;
+      auto around = (*vertex)->incident_halfedges(), start = around;
+      do {
+        if(around->face()->data() != no_cell) return around->face()->data();
+      } while(++around != start);
+    }
+    return no_cell;
   }
 };
 

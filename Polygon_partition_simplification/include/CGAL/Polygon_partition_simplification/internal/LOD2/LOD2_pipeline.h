@@ -113,7 +113,7 @@ struct LOD2_input
     settings.lift.facade_weight = choose_parameter(get_parameter(np, pps_np::facade_weight), 0.25);
     settings.lift.minimum_building_height = choose_parameter(get_parameter(np, pps_np::minimum_building_height), 0.);
     settings.height_tolerance = choose_parameter(get_parameter(np, pps_np::height_tolerance), 0.);
-    if(!choose_parameter(get_parameter(np, pps_np::walls_at_facades), true)) settings.lift.free_space_samples = 0;
+    if(!choose_parameter(get_parameter(np, pps_np::walls_at_facades), true)) settings.lift.facade_samples = 0;
     check_settings();
   }
 
@@ -236,10 +236,10 @@ void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const
       evidence.points.push_back(
         {{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}});
   evidence.cell_of_point = arrangement.locate(evidence.points);
-  if(settings.lift.free_space_samples > 0) {
-    evidence.free_space =
-      facade_free_space<Kernel>(points, planes, settings.lift.facade_distance, settings.lift.free_space_samples);
-    evidence.cell_of_free_space = arrangement.locate(evidence.free_space);
+  if(settings.lift.facade_samples > 0) {
+    evidence.facades = facade_evidence<Kernel>(points, planes, settings.lift.facade_distance, settings.lift.facade_samples);
+    evidence.cell_in_front = arrangement.locate(evidence.facades.in_front);
+    evidence.cell_behind = arrangement.locate(evidence.facades.behind);
   }
   std::vector<typename Kernel::Segment_2> facades;
   for(const auto& s : segments)

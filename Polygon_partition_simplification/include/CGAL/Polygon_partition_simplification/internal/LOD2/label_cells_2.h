@@ -8,7 +8,7 @@
 
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Cell_arrangement_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Height_functions.h>
-#include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_free_space_3.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/runs_along_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
 
@@ -32,7 +32,7 @@ struct Lift_settings
   double facade_weight = 0.25;        ///< factor of the smoothness on edges along facade segments
   double minimum_building_height = 1; ///< a roof is at least this high above the ground at every corner
   double facade_distance = 0.5;       ///< an edge within this distance of a facade segment is along it
-  std::size_t free_space_samples = 2; ///< samples of the free space in front of every facade point (0: none)
+  std::size_t facade_samples = 2;     ///< samples in front of and behind every facade point (0: none)
 };
 
 /// An edge of the cell arrangement for the lift: its two cells, its ends, its weight.
@@ -73,41 +73,46 @@ inline double mean_height_difference(const Height_functions& heights, const Lift
                 std::abs(heights.height(a, edge.target) - heights.height(b, edge.target)));
 }
 
-/// The evidence of the lift: the points above the cells (roofs, ground, clutter; not the
-/// facades) and the free space in front of the facades, each with its cell.
+/// The evidence of the lift, each item with its cell: the points above the cells (roofs, ground,
+/// clutter; not the facades) and the samples of `Facade_evidence_3`.
 struct Lift_evidence
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::size_t> cell_of_point;
-  std::vector<Free_space_sample> free_space;
-  std::vector<std::size_t> cell_of_free_space;
+  Facade_evidence_3 facades;
+  std::vector<std::size_t> cell_in_front, cell_behind;
 };
 
 /// the data term of Eq. 3.1 for every cell and label: the area of the cell times the mean
-/// residual of its evidence, where a point costs its height above or below the label's plane
-/// and a free-space sample its height below that plane (zero when the plane passes below it),
-/// both at most `height_threshold`. A cell without evidence costs nothing on the ground and
-/// `height_threshold * area` on a roof (no evidence of a building); a roof label whose plane is
-/// less than `minimum_building_height` above the ground at a corner of the cell is forbidden
-/// (+infinity).
+/// residual of its evidence, where a point costs its vertical distance to the label's plane, a
+/// sample in front of a facade the height of the plane above it and a sample behind a facade
+/// the height of the plane below it, each at most `height_threshold`. A cell without evidence
+/// costs nothing on the ground and `height_threshold * area` on a roof (no evidence of a
+/// building); a roof label whose plane is less than `minimum_building_height` above the ground
+/// at a corner of the cell is forbidden (+infinity).
 inline std::vector<std::vector<double>> lift_data_term(const Cell_arrangement_2& cells, const Lift_evidence& evidence,
                                                        const Height_functions& heights, const Lift_settings& settings)
 {
   const std::size_t labels = heights.number_of_labels();
   std::vector<std::vector<double>> cost(cells.number_of_cells(), std::vector<double>(labels, 0));
   std::vector<std::size_t> count(cells.number_of_cells(), 0);
-  auto add = [&](const std::array<double, 3>& p, std::size_t c, bool free_space) {
-    if(c == Cell_arrangement_2::no_cell) return;
-    ++count[c];
-    const std::array<double, 2> xy{{p[0], p[1]}};
-    for(std::size_t l = 0; l < labels; ++l) {
-      const double above = heights.height(l, xy) - p[2];
-      cost[c][l] += std::min(settings.height_threshold, free_space ? std::max(0., above) : std::abs(above));
+  // `below` and `above` weigh the plane's height below and above the sample
+  auto add = [&](const std::vector<std::array<double, 3>>& samples, const std::vector<std::size_t>& cell_of_sample,
+                 double below, double above) {
+    for(std::size_t i = 0; i < samples.size(); ++i) {
+      const std::size_t c = cell_of_sample[i];
+      if(c == Cell_arrangement_2::no_cell) continue;
+      ++count[c];
+      const std::array<double, 2> xy{{samples[i][0], samples[i][1]}};
+      for(std::size_t l = 0; l < labels; ++l) {
+        const double difference = heights.height(l, xy) - samples[i][2];
+        cost[c][l] += std::min(settings.height_threshold, difference > 0 ? above * difference : -below * difference);
+      }
     }
   };
-  for(std::size_t i = 0; i < evidence.points.size(); ++i) add(evidence.points[i], evidence.cell_of_point[i], false);
-  for(std::size_t i = 0; i < evidence.free_space.size(); ++i)
-    add(evidence.free_space[i], evidence.cell_of_free_space[i], true);
+  add(evidence.points, evidence.cell_of_point, 1, 1);
+  add(evidence.facades.in_front, evidence.cell_in_front, 0, 1);
+  add(evidence.facades.behind, evidence.cell_behind, 1, 0);
   for(std::size_t c = 0; c < cells.number_of_cells(); ++c) {
     double area = 0;
     for(const auto& ring : cells.rings[c]) {

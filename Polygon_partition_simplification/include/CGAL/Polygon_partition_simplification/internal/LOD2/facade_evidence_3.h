@@ -1,8 +1,8 @@
 // Copyright (c) 2026  The Polygon_partition_simplification authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 
-#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_FACADE_FREE_SPACE_3_H
-#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_FACADE_FREE_SPACE_3_H
+#ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_FACADE_EVIDENCE_3_H
+#define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_FACADE_EVIDENCE_3_H
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
@@ -25,9 +25,15 @@ namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
 
-/// A point of free space in front of a facade: a model whose height at (x, y) exceeds z
-/// occupies space where the scanner saw through.
-using Free_space_sample = std::array<double, 3>;
+/// Where the points of the facades put the walls of a 2.5D model: a facade point at height z
+/// is on a wall when the model is lower than z in front of the facade and at least z behind it.
+/// Each sample (x, y, z) says so at one place: `in_front`, the scanner saw through (x, y, z), so a
+/// model higher than z there occupies empty space; `behind`, (x, y, z) is inside the building,
+/// so a model lower than z there leaves out what the wall encloses.
+struct Facade_evidence_3
+{
+  std::vector<std::array<double, 3>> in_front, behind;
+};
 
 /// The frame of a vertical plane on the ground: its point nearest to the centroid of its points,
 /// its horizontal unit normal, and the extent of its points along it and in height.
@@ -74,9 +80,9 @@ Facade_frame_2 facade_frame(const std::vector<typename Kernel::Point_3>& points,
   return frame;
 }
 
-/// The free space in front of the facades (the vertical planes), seen by the scanner that
-/// sampled them: for every point of a facade, `samples_per_point` points on the horizontal ray
-/// from its projection on the plane, outwards, at `step`, 2 `step`, ..., at the point's height.
+/// The evidence of the facades (the vertical planes): for every point of a facade,
+/// `samples_per_point` points on the horizontal ray from its projection on the plane, outwards,
+/// at `step`, 2 `step`, ..., at the point's height, and as many on the ray inwards.
 ///
 /// The outside of a facade is the side with fewer roof points (points of planes other than the
 /// ground and the facades) above its mid-height, in the strip between `step` and `step` plus the
@@ -86,12 +92,11 @@ Facade_frame_2 facade_frame(const std::vector<typename Kernel::Point_3>& points,
 /// not used, so the result is the same for oriented, unoriented or estimated normals.
 ///
 /// `step` must exceed the distance from a facade's plane to the partition's line along it, so
-/// that the first sample lies in front of the wall of the model; the pipeline uses the largest
-/// distance of a point to its plane.
+/// that the first samples lie on the right side of the wall of the model; the pipeline uses the
+/// largest distance of a point to its plane.
 template <class Kernel>
-std::vector<Free_space_sample> facade_free_space(const std::vector<typename Kernel::Point_3>& points,
-                                                 const Building_planes_3<Kernel>& planes, double step,
-                                                 std::size_t samples_per_point = 4)
+Facade_evidence_3 facade_evidence(const std::vector<typename Kernel::Point_3>& points,
+                                  const Building_planes_3<Kernel>& planes, double step, std::size_t samples_per_point = 2)
 {
   using Tree_kernel = CGAL::Simple_cartesian<double>;
   using Traits = CGAL::Search_traits_3<Tree_kernel>;
@@ -103,7 +108,7 @@ std::vector<Free_space_sample> facade_free_space(const std::vector<typename Kern
       for(std::size_t i : planes.planes[p].inliers)
         roofs.insert(Tree_kernel::Point_3(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
                                           CGAL::to_double(points[i].z())));
-  std::vector<Free_space_sample> samples;
+  Facade_evidence_3 samples;
   if(roofs.empty() || !(step > 0)) return samples;
   roofs.build();
   const double infinity = std::numeric_limits<double>::infinity();
@@ -137,9 +142,11 @@ std::vector<Free_space_sample> facade_free_space(const std::vector<typename Kern
     for(std::size_t i : facade.inliers) {
       const double x = CGAL::to_double(points[i].x()), y = CGAL::to_double(points[i].y());
       const double s = sign * frame.offset(x, y);
+      const double z = CGAL::to_double(points[i].z());
       for(std::size_t k = 1; k <= samples_per_point; ++k) {
-        const double d = double(k) * step - s;
-        samples.push_back({{x + d * nx, y + d * ny, CGAL::to_double(points[i].z())}});
+        const double out = double(k) * step - s, in = -double(k) * step - s;
+        samples.in_front.push_back({{x + out * nx, y + out * ny, z}});
+        samples.behind.push_back({{x + in * nx, y + in * ny, z}});
       }
     }
   }
@@ -150,4 +157,4 @@ std::vector<Free_space_sample> facade_free_space(const std::vector<typename Kern
 } // namespace Polygon_partition_simplification
 } // namespace CGAL
 
-#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_FACADE_FREE_SPACE_3_H
+#endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_LOD2_FACADE_EVIDENCE_3_H
