@@ -82,26 +82,32 @@ struct Cell_arrangement_2
 
   /// the cell of each point (x, y, z) of `points`, `no_cell` outside every cell; a point on an edge
   /// or a vertex goes to a cell incident to it (the face of the edge's halfedge directed from
-  /// the smaller endpoint, the first cell found around the vertex). All the points are located
-  /// in one plane sweep (CGAL's batched point location), which costs O((n + m) log(n + m)) for n
-  /// points and m edges, where a walk from the nearest landmark per point cost more on points
-  /// near the edges, as the samples of the facades are.
+  /// the smaller endpoint, the first cell found around the vertex). The points are located by
+  /// plane sweeps (CGAL's batched point location) of max(8192, m) points at a time for m edges,
+  /// which cost O((n + m) log(n + m)) in all for n points and use memory in O(m); a walk from
+  /// the nearest landmark per point cost more on points near the edges, as the samples of the
+  /// facades are.
   std::vector<std::size_t> locate(const std::vector<std::array<double, 3>>& points) const
   {
     using Location = typename CGAL::Arr_point_location_result<Arrangement>::Type;
-    std::vector<Point_2> queries;
-    queries.reserve(points.size());
-    for(const auto& p : points) queries.emplace_back(p[0], p[1]);
-    std::vector<std::pair<Point_2, Location>> located;
-    located.reserve(points.size());
-    CGAL::locate(arrangement, queries.begin(), queries.end(), std::back_inserter(located));
     auto by_point = [](const std::pair<Point_2, Location>& a, const std::pair<Point_2, Location>& b) { return a.first < b.first; };
-    std::sort(located.begin(), located.end(), by_point);
+    // in chunks, so that the memory of the sweep is bounded whatever the number of points
+    const std::size_t chunk = std::max<std::size_t>(1 << 13, arrangement.number_of_edges());
+    std::vector<Point_2> queries;
+    std::vector<std::pair<Point_2, Location>> located;
     std::vector<std::size_t> result;
     result.reserve(points.size());
-    for(const Point_2& q : queries) {
-      const auto found = std::lower_bound(located.begin(), located.end(), std::make_pair(q, Location()), by_point);
-      result.push_back(found != located.end() && found->first == q ? cell_at(found->second) : no_cell);
+    for(std::size_t first = 0; first < points.size(); first += chunk) {
+      const std::size_t last = std::min(points.size(), first + chunk);
+      queries.clear();
+      for(std::size_t i = first; i < last; ++i) queries.emplace_back(points[i][0], points[i][1]);
+      located.clear();
+      CGAL::locate(arrangement, queries.begin(), queries.end(), std::back_inserter(located));
+      std::sort(located.begin(), located.end(), by_point);
+      for(const Point_2& q : queries) {
+        const auto found = std::lower_bound(located.begin(), located.end(), std::make_pair(q, Location()), by_point);
+        result.push_back(found != located.end() && found->first == q ? cell_at(found->second) : no_cell);
+      }
     }
     return result;
   }
