@@ -14,8 +14,8 @@
 
 #include <algorithm>
 #include <array>
-#include <iterator>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <utility>
