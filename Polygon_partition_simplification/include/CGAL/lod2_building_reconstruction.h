@@ -96,7 +96,7 @@ point at height \f$z\f$ is on a wall of a 2.5D model when the model is lower tha
 front of the facade and at least \f$z\f$ behind it. Every point of a vertical plane gives two
 samples \f$q\f$ on the horizontal ray from its projection on the plane, outwards, at once and
 twice `maximum_distance`, and two on the ray inwards, at the point's height; they enter
-\f$E_C\f$ as points do, a sample in front costing \f$\min(\epsilon, \max(0, \Pi(q_x, q_y) - q_z))\f$
+\f$E_C\f$ as points do (each counted in \f$|P \cap C|\f$), a sample in front costing \f$\min(\epsilon, \max(0, \Pi(q_x, q_y) - q_z))\f$
 and one behind \f$\min(\epsilon, \max(0, q_z - \Pi(q_x, q_y)))\f$. The outside of a facade is its
 side with fewer roof points above its mid-height within its height of it (normals are not used).
 
