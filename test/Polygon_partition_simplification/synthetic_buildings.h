@@ -9,7 +9,9 @@
 // around the buildings, at a lower density on the walls (an airborne scanner sees them
 // poorly), and moved along the normal of the true surface by Gaussian noise. Flat roofs can
 // overhang their walls (eaves, sampled as the roof but not part of the truth, whose walls
-// stand on the footprints as LOD2 models' do). The samples
+// stand on the footprints as LOD2 models' do); every flat roof gets them, so in the scene of two
+// heights the main roof's eave would overhang the annex's roof: the tests give eaves to the
+// L-shaped building only. The samples
 // depend only on the seed: the uniform and normal variates are made here from std::mt19937,
 // whose output the standard fixes, not by the library's distributions, which it does not.
 // Also: distances of points to a mesh and between two meshes both ways (sampled Hausdorff).

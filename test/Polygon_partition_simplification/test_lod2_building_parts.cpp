@@ -18,7 +18,8 @@
 //   (with an overhanging eave on it, or a lower roof), whatever the sign of the plane's normal;
 //   the samples lie on the horizontal through each point's projection on the plane, at
 //   multiples of the step outwards and inwards, at the point's height; a wall that carries no
-//   roof gives none.
+//   roof gives none; across a courtyard narrower than the walls are high, the outside of each
+//   wing's facade is the courtyard although the other wing's roof is within reach.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -754,9 +755,33 @@ void test_facade_evidence()
           CHECK(front[1] == p.y() && front[2] == p.z() && back[1] == p.y() && back[2] == p.z());
         }
     }
-  const Scene lone_wall = box(true, false, false);
+  // a wall with a roof only far from it (beyond its height): neither side is the inside
+  Scene lone_wall = box(true, false, false);
+  lone_wall.add(K::Plane_3(0, 0, 1, -10), false, {-20, -15}, {0, 10}, {10, 10});
   const auto none = PPS::internal::facade_evidence<K>(lone_wall.points, lone_wall.planes, step, 2);
   CHECK(none.in_front.empty() && none.behind.empty());
+}
+
+// A courtyard 6 m wide between a wing 6 m deep and a wider one, both 15 m high: the facade of
+// the narrow wing has more roof within its height on the courtyard side (the other wing) than on
+// its own, but the roof on its own side starts at the wall.
+void test_facade_evidence_across_a_courtyard()
+{
+  Scene scene;
+  scene.add(K::Plane_3(0, 0, 1, 0), false, {-5, 45}, {-5, 15}, {0, 0});
+  scene.planes.ground = 0;
+  scene.add(K::Plane_3(0, 0, 1, -15), false, {4, 10}, {0, 10}, {15, 15});  // the narrow wing
+  scene.add(K::Plane_3(0, 0, 1, -15), false, {16, 40}, {0, 10}, {15, 15}); // the other one
+  scene.add(K::Plane_3(-1, 0, 0, 10), true, {10, 10}, {0, 10}, {0, 15});   // its normal into the narrow wing
+  scene.add(K::Plane_3(1, 0, 0, -16), true, {16, 16}, {0, 10}, {0, 15});   // its normal into the other wing
+  const double step = 0.3;
+  const auto samples = PPS::internal::facade_evidence<K>(scene.points, scene.planes, step, 1);
+  const std::size_t n = scene.planes.planes[3].inliers.size();
+  CHECK(samples.in_front.size() == 2 * n && samples.behind.size() == 2 * n);
+  for(std::size_t i = 0; i < n; ++i) {
+    CHECK(std::abs(samples.in_front[i][0] - (10 + step)) < 1e-9 && std::abs(samples.behind[i][0] - (10 - step)) < 1e-9);
+    CHECK(std::abs(samples.in_front[n + i][0] - (16 - step)) < 1e-9 && std::abs(samples.behind[n + i][0] - (16 + step)) < 1e-9);
+  }
 }
 
 } // namespace facade_evidence
@@ -769,6 +794,7 @@ int main()
   test_alpha_expansion_on_a_grid();
   test_CityJSON();
   facade_evidence::test_facade_evidence();
+  facade_evidence::test_facade_evidence_across_a_courtyard();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;
 }

@@ -97,8 +97,9 @@ front of the facade and at least \f$z\f$ behind it. Every point of a vertical pl
 samples \f$q\f$ on the horizontal ray from its projection on the plane, outwards, at once and
 twice `maximum_distance`, and two on the ray inwards, at the point's height; they enter
 \f$E_C\f$ as points do (each counted in \f$|P \cap C|\f$), a sample in front costing \f$\min(\epsilon, \max(0, \Pi(q_x, q_y) - q_z))\f$
-and one behind \f$\min(\epsilon, \max(0, q_z - \Pi(q_x, q_y)))\f$. The outside of a facade is its
-side with fewer roof points above its mid-height within its height of it (normals are not used).
+and one behind \f$\min(\epsilon, \max(0, q_z - \Pi(q_x, q_y)))\f$. The inside of a facade is
+the side where the roof points above its mid-height run on farther from it without a gap, up
+to its height away; a facade that this does not orient gives no samples (normals are not used).
 
 <b>Extrusion</b>. Cells of one label are merged; each connected set of roof cells is one
 building: its roofs (the cells at their plane's height), walls between two heights or down to

@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/building_meshes_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/building_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/detect_building_planes_3.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/label_cells_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 #include <CGAL/kinetic_partition_2.h>

@@ -80,64 +80,82 @@ Facade_frame_2 facade_frame(const std::vector<typename Kernel::Point_3>& points,
   return frame;
 }
 
+/// A kd-tree of the roof points (the points of the planes other than the ground and the facades).
+using Roof_point_tree = CGAL::Kd_tree<CGAL::Search_traits_3<CGAL::Simple_cartesian<double>>>;
+
+/// +1 when the outside of the facade is on the side of its normal, -1 on the other side, 0 when
+/// the roof points do not tell. Behind a facade, the roof it carries runs on from the wall; in
+/// front of it there is at most an overhanging eave before a gap (a street, a courtyard, a
+/// garden), or a lower roof. So on each side the roof points above the facade's mid-height, along
+/// its extent and between `step` and `step` plus its height from its plane, are counted in strips
+/// of width `step` parallel to it; a strip is filled when it holds at least a quarter of the
+/// points of the fullest strip of both sides, and the inside is the side whose filled strips run
+/// farther from the wall without a gap.
+inline int outward_sign(const Facade_frame_2& frame, const Roof_point_tree& roofs, double step)
+{
+  using Point = Roof_point_tree::Point_d;
+  const double infinity = std::numeric_limits<double>::infinity();
+  const double reach = step + frame.height;
+  // the bounding box of the two sides, then the points on each side
+  double box_min[2] = {infinity, infinity}, box_max[2] = {-infinity, -infinity};
+  for(double t : {frame.first, frame.last})
+    for(double s : {-reach, reach})
+      for(int c = 0; c < 2; ++c) {
+        const double v = frame.origin[c] + s * frame.normal[c] + t * (c == 0 ? -frame.normal[1] : frame.normal[0]);
+        box_min[c] = std::min(box_min[c], v);
+        box_max[c] = std::max(box_max[c], v);
+      }
+  std::vector<Point> found;
+  roofs.search(std::back_inserter(found),
+               CGAL::Fuzzy_iso_box<Roof_point_tree::Traits>(Point(box_min[0], box_min[1], frame.bottom + 0.5 * frame.height),
+                                                            Point(box_max[0], box_max[1], infinity)));
+  const std::size_t strips = std::size_t(std::ceil(frame.height / step));
+  std::array<std::vector<std::size_t>, 2> count{{std::vector<std::size_t>(strips, 0), std::vector<std::size_t>(strips, 0)}};
+  for(const Point& q : found) {
+    const double s = frame.offset(q.x(), q.y()), t = frame.along(q.x(), q.y());
+    if(t < frame.first || t > frame.last || std::abs(s) < step || std::abs(s) >= reach) continue;
+    ++count[s > 0 ? 0 : 1][std::min(strips - 1, std::size_t((std::abs(s) - step) / step))];
+  }
+  std::size_t fullest = 0;
+  for(const auto& side : count) fullest = std::max(fullest, *std::max_element(side.begin(), side.end()));
+  if(fullest == 0) return 0;
+  std::array<std::size_t, 2> run{{0, 0}};
+  for(int side = 0; side < 2; ++side)
+    while(run[side] < strips && 4 * count[side][run[side]] >= fullest) ++run[side];
+  return run[0] == run[1] ? 0 : run[0] < run[1] ? 1 : -1;
+}
+
 /// The evidence of the facades (the vertical planes): for every point of a facade,
 /// `samples_per_point` points on the horizontal ray from its projection on the plane, outwards,
 /// at `step`, 2 `step`, ..., at the point's height, and as many on the ray inwards.
 ///
-/// The outside of a facade is the side with fewer roof points (points of planes other than the
-/// ground and the facades) above its mid-height, in the strip between `step` and `step` plus the
-/// facade's height from its plane, along its extent: behind a facade is the roof it carries, in
-/// front of it at most an overhanging eave, narrower than the wall is high, or a lower roof. A
-/// facade with as many roof points on both sides gives no samples. The normals of the points are
-/// not used, so the result is the same for oriented, unoriented or estimated normals.
+/// The outside of a facade is given by `outward_sign()`; a facade it cannot orient, or with no
+/// height, gives no samples. The normals of the points are not used, so the result is the same
+/// for oriented, unoriented or estimated normals.
 ///
-/// `step` must exceed the distance from a facade's plane to the partition's line along it, so
-/// that the first samples lie on the right side of the wall of the model; the pipeline uses the
-/// largest distance of a point to its plane.
+/// `step` should exceed the distance from a facade's plane to the partition's line along it, so
+/// that the first samples lie on the right side of the wall of the model; the pipeline uses
+/// `maximum_distance` (3 times the spacing by default, more than the 2 spacings within which the
+/// kinetic partition puts segments on one line).
 template <class Kernel>
 Facade_evidence_3 facade_evidence(const std::vector<typename Kernel::Point_3>& points,
                                   const Building_planes_3<Kernel>& planes, double step, std::size_t samples_per_point = 2)
 {
-  using Tree_kernel = CGAL::Simple_cartesian<double>;
-  using Traits = CGAL::Search_traits_3<Tree_kernel>;
-  using Tree = CGAL::Kd_tree<Traits>;
-  using Box = CGAL::Fuzzy_iso_box<Traits>;
-  Tree roofs;
+  Roof_point_tree roofs;
   for(std::size_t p = 0; p < planes.planes.size(); ++p)
     if(p != planes.ground && !planes.planes[p].is_vertical)
       for(std::size_t i : planes.planes[p].inliers)
-        roofs.insert(Tree_kernel::Point_3(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
-                                          CGAL::to_double(points[i].z())));
+        roofs.insert(Roof_point_tree::Point_d(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
+                                              CGAL::to_double(points[i].z())));
   Facade_evidence_3 samples;
   if(roofs.empty() || !(step > 0)) return samples;
   roofs.build();
-  const double infinity = std::numeric_limits<double>::infinity();
   for(const auto& facade : planes.planes) {
     if(!facade.is_vertical) continue;
     const Facade_frame_2 frame = facade_frame<Kernel>(points, facade);
     if(!(frame.height > 0)) continue;
-    // the bounding box of the two strips, then the points in each strip
-    const double reach = step + frame.height;
-    double box_min[2] = {infinity, infinity}, box_max[2] = {-infinity, -infinity};
-    for(double t : {frame.first, frame.last})
-      for(double s : {-reach, reach})
-        for(int c = 0; c < 2; ++c) {
-          const double v = frame.origin[c] + s * frame.normal[c] + t * (c == 0 ? -frame.normal[1] : frame.normal[0]);
-          box_min[c] = std::min(box_min[c], v);
-          box_max[c] = std::max(box_max[c], v);
-        }
-    const double low = frame.bottom + 0.5 * frame.height;
-    std::vector<Tree_kernel::Point_3> found;
-    roofs.search(std::back_inserter(found), Box(Tree_kernel::Point_3(box_min[0], box_min[1], low),
-                                                Tree_kernel::Point_3(box_max[0], box_max[1], infinity)));
-    std::size_t on_normal_side = 0, on_other_side = 0;
-    for(const auto& q : found) {
-      const double s = frame.offset(q.x(), q.y()), t = frame.along(q.x(), q.y());
-      if(t < frame.first || t > frame.last || std::abs(s) <= step || std::abs(s) > reach) continue;
-      ++(s > 0 ? on_normal_side : on_other_side);
-    }
-    if(on_normal_side == on_other_side) continue;
-    const double sign = on_normal_side < on_other_side ? 1 : -1;
+    const int sign = outward_sign(frame, roofs, step);
+    if(sign == 0) continue;
     const double nx = sign * frame.normal[0], ny = sign * frame.normal[1];
     for(std::size_t i : facade.inliers) {
       const double x = CGAL::to_double(points[i].x()), y = CGAL::to_double(points[i].y());
