@@ -88,9 +88,9 @@ using Roof_point_tree = CGAL::Kd_tree<CGAL::Search_traits_3<CGAL::Simple_cartesi
 /// front of it there is at most an overhanging eave before a gap (a street, a courtyard, a
 /// garden), or a lower roof. So on each side the roof points above the facade's mid-height, along
 /// its extent and between `step` and `step` plus its height from its plane, are counted in strips
-/// of width `step` parallel to it; a strip is filled when it holds at least a quarter of the
-/// points of the fullest strip of both sides, and the inside is the side whose filled strips run
-/// farther from the wall without a gap.
+/// of width `step` (at most 1024 strips) parallel to it; a strip is filled when it holds at least
+/// a quarter of the points of the fullest strip of both sides, and the inside is the side whose
+/// filled strips run farther from the wall without a gap.
 inline int outward_sign(const Facade_frame_2& frame, const Roof_point_tree& roofs, double step)
 {
   using Point = Roof_point_tree::Point_d;
@@ -109,12 +109,14 @@ inline int outward_sign(const Facade_frame_2& frame, const Roof_point_tree& roof
   roofs.search(std::back_inserter(found),
                CGAL::Fuzzy_iso_box<Roof_point_tree::Traits>(Point(box_min[0], box_min[1], frame.bottom + 0.5 * frame.height),
                                                             Point(box_max[0], box_max[1], infinity)));
-  const std::size_t strips = std::size_t(std::ceil(frame.height / step));
+  // strips of width `step`, or wider when `step` is tiny against the facade (at most 1024 strips)
+  const double width = std::max(step, frame.height / 1024);
+  const std::size_t strips = std::max<std::size_t>(1, std::size_t(std::ceil(frame.height / width)));
   std::array<std::vector<std::size_t>, 2> count{{std::vector<std::size_t>(strips, 0), std::vector<std::size_t>(strips, 0)}};
   for(const Point& q : found) {
     const double s = frame.offset(q.x(), q.y()), t = frame.along(q.x(), q.y());
     if(t < frame.first || t > frame.last || std::abs(s) < step || std::abs(s) >= reach) continue;
-    ++count[s > 0 ? 0 : 1][std::min(strips - 1, std::size_t((std::abs(s) - step) / step))];
+    ++count[s > 0 ? 0 : 1][std::min(strips - 1, std::size_t((std::abs(s) - step) / width))];
   }
   std::size_t fullest = 0;
   for(const auto& side : count) fullest = std::max(fullest, *std::max_element(side.begin(), side.end()));
