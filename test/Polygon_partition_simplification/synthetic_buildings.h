@@ -11,9 +11,9 @@
 // overhang their walls (eaves, sampled as the roof but not part of the truth, whose walls
 // stand on the footprints as LOD2 models' do); every flat roof gets them, so in the scene of two
 // heights the main roof's eave would overhang the annex's roof: the tests give eaves to the
-// L-shaped building only. The samples
-// depend only on the seed: the uniform and normal variates are made here from std::mt19937,
-// whose output the standard fixes, not by the library's distributions, which it does not.
+// L-shaped building only. The samples depend only on the seed: the uniform and normal variates
+// are made here from std::mt19937, whose output the standard fixes, not by the library's
+// distributions, which it does not.
 // Also: distances of points to a mesh and between two meshes both ways (sampled Hausdorff).
 
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_TEST_SYNTHETIC_BUILDINGS_H

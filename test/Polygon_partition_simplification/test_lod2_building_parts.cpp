@@ -690,7 +690,7 @@ void test_CityJSON()
 }
 
 // ---------------------------------------------------------------------------------------------
-// Free space in front of facades
+// Facade evidence: samples in front of and behind the facades
 
 namespace facade_evidence {
 

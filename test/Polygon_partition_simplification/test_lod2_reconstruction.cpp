@@ -79,7 +79,8 @@ static T::Two_way_distances test_scene(T::Scene_kind kind, double wall_density, 
   options.eave_overhang = eave_overhang;
   const std::vector<T::Sample> samples = T::sample_scene(scene, options);
   const std::string name = scene.name + (detect ? " (detected planes" : " (given planes") + ", walls x" +
-                           std::to_string(wall_density) + (eave_overhang > 0 ? ", eaves " + std::to_string(eave_overhang) + " m" : "") +
+                           std::to_string(wall_density) +
+                           (eave_overhang > 0 ? ", eaves " + std::to_string(eave_overhang) + " m" : "") +
                            (walls_at_facades ? ")" : ", walls at the eaves)");
   Mesh model;
   const auto np = PPS::parameters::walls_at_facades(walls_at_facades, sample_maps());

@@ -96,8 +96,8 @@ point at height \f$z\f$ is on a wall of a 2.5D model when the model is lower tha
 front of the facade and at least \f$z\f$ behind it. Every point of a vertical plane gives two
 samples \f$q\f$ on the horizontal ray from its projection on the plane, outwards, at once and
 twice `maximum_distance`, and two on the ray inwards, at the point's height; they enter
-\f$E_C\f$ as points do (each counted in \f$|P \cap C|\f$), a sample in front costing \f$\min(\epsilon, \max(0, \Pi(q_x, q_y) - q_z))\f$
-and one behind \f$\min(\epsilon, \max(0, q_z - \Pi(q_x, q_y)))\f$. The inside of a facade is
+\f$E_C\f$ as points do (each counted in \f$|P \cap C|\f$), a sample in front costing
+\f$\min(\epsilon, \max(0, \Pi(q_x, q_y) - q_z))\f$ and one behind \f$\min(\epsilon, \max(0, q_z - \Pi(q_x, q_y)))\f$. The inside of a facade is
 the side where the roof points above its mid-height run on farther from it without a gap, up
 to its height away; a facade that this does not orient gives no samples (normals are not used).
 

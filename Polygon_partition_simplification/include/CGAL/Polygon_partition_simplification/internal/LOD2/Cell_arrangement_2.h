@@ -90,11 +90,12 @@ struct Cell_arrangement_2
   std::vector<std::size_t> locate(const std::vector<std::array<double, 3>>& points) const
   {
     using Location = typename CGAL::Arr_point_location_result<Arrangement>::Type;
-    auto by_point = [](const std::pair<Point_2, Location>& a, const std::pair<Point_2, Location>& b) { return a.first < b.first; };
+    using Located = std::pair<Point_2, Location>;
+    auto by_point = [](const Located& a, const Located& b) { return a.first < b.first; };
     // in chunks, so that the memory of the sweep is bounded whatever the number of points
     const std::size_t chunk = std::max<std::size_t>(1 << 13, arrangement.number_of_edges());
     std::vector<Point_2> queries;
-    std::vector<std::pair<Point_2, Location>> located;
+    std::vector<Located> located;
     std::vector<std::size_t> result;
     result.reserve(points.size());
     for(std::size_t first = 0; first < points.size(); first += chunk) {

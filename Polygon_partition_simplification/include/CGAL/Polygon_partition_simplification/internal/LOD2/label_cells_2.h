@@ -31,7 +31,8 @@ struct Lift_settings
   double regularization_length = 1;   ///< mu of the lift energy
   double facade_weight = 0.25;        ///< factor of the smoothness on edges along facade segments
   double minimum_building_height = 1; ///< a roof is at least this high above the ground at every corner
-  double facade_distance = 0.5;       ///< an edge within this distance of a facade segment is along it; the step of the facade samples
+  /// an edge within this distance of a facade segment is along it; also the step of the facade samples
+  double facade_distance = 0.5;
   std::size_t facade_samples = 2;     ///< samples in front of and behind every facade point (0: none)
 };
 
