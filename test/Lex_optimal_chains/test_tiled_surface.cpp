@@ -176,6 +176,55 @@ void test_synthetic_terrain()
   CGAL::lex_optimal_tiled_surface_reconstruction(shuffled, 34, again);
   for(std::size_t t = 0; t < tiles.size(); ++t) assert(triangles_of(again[t]) == triangles_of(tiles[t]));
   std::cout << "  same tiles from every point given twice" << std::endl;
+
+  // Dealt out to 2 and to 3 processes (Tile_share): every tile in exactly one share, with the
+  // mesh of the call with every tile; the shares balanced as the deal says (longest first: no
+  // share above the average by more than the largest tile).
+  std::size_t largest = 0, total = 0;
+  for(const LOC::Tile_report& t : r.tiles) {
+    largest = std::max(largest, t.number_of_points);
+    total += t.number_of_points;
+  }
+  for(std::size_t count : {2u, 3u}) {
+    std::vector<int> times_made(tiles.size(), 0);
+    std::vector<std::size_t> load(count, 0);
+    for(std::size_t index = 0; index < count; ++index) {
+      std::vector<Mesh> part;
+      const LOC::Tiled_surface_report s = CGAL::lex_optimal_tiled_surface_reconstruction(
+        points, 34, part, LOC::parameters::tile_share(LOC::Tile_share{index, count}));
+      assert(part.size() == tiles.size() && s.share.index == index && s.share.count == count);
+      for(std::size_t t = 0; t < tiles.size(); ++t) {
+        assert(s.tiles[t].reconstructed == (s.tiles[t].share == index));
+        assert(s.tiles[t].number_of_points == r.tiles[t].number_of_points);
+        if(!s.tiles[t].reconstructed) {
+          assert(part[t].is_empty() && s.tiles[t].mesh_faces == 0);
+          continue;
+        }
+        ++times_made[t];
+        load[index] += s.tiles[t].number_of_points;
+        assert(triangles_of(part[t]) == triangles_of(tiles[t]));
+      }
+    }
+    assert(std::count(times_made.begin(), times_made.end(), 1) == long(tiles.size()));
+    for(std::size_t l : load) assert(double(l) <= double(total) / double(count) + double(largest));
+    std::cout << "  dealt to " << count << " processes: every tile once, the same meshes, points per share";
+    for(std::size_t l : load) std::cout << " " << l;
+    std::cout << std::endl;
+  }
+
+  // the peak memory of each tile, measured when they run one at a time (Linux)
+  std::vector<Mesh> measured;
+  const LOC::Tiled_surface_report m = CGAL::lex_optimal_tiled_surface_reconstruction(
+    points, 34, measured, LOC::parameters::measure_tile_memory(true));
+#ifdef __linux__
+  for(const LOC::Tile_report& t : m.tiles) assert(t.peak_memory_bytes > 0 && t.peak_memory_bytes <= m.peak_memory_bytes);
+  std::cout << "  peak memory measured per tile: " << m.tiles[0].peak_memory_bytes / 1e6 << " MB for the first, "
+            << m.peak_memory_bytes / 1e6 << " MB over the call" << std::endl;
+#endif
+  const LOC::Tiled_surface_report unmeasured = CGAL::lex_optimal_tiled_surface_reconstruction(
+    points, 34, measured, LOC::parameters::measure_tile_memory(true, LOC::parameters::number_of_threads(2u)));
+  if(unmeasured.number_of_threads == 2) // tiles at once: the process's peak is not theirs
+    for(const LOC::Tile_report& t : unmeasured.tiles) assert(t.peak_memory_bytes == 0);
 }
 
 // A flat cloud (all heights 0, a parking lot): the frame is below it, so the tiles are not
@@ -226,6 +275,10 @@ void test_bad_input()
   for(const Point& p : points)
     if(std::abs(p.x() - 5) > 1 || std::abs(p.y() - 5) > 1) holed.push_back(p);
   expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(holed, 5., tiles); });
+  for(const LOC::Tile_share& share : {LOC::Tile_share{2, 2}, LOC::Tile_share{0, 0}})
+    expect_error(Code::INVALID_PARAMETER, [&] {
+      CGAL::lex_optimal_tiled_surface_reconstruction(points, 5., tiles, LOC::parameters::tile_share(share));
+    });
   expect_error(Code::EMPTY_INPUT, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(std::vector<Point>(), 5., tiles); });
   std::vector<Point> nan = points;
   nan[7] = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);

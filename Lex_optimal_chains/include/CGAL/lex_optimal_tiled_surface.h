@@ -14,8 +14,10 @@
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Optimal_chain_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
+#include <CGAL/Lex_optimal_chains/internal/Peak_memory.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 #include <CGAL/Lex_optimal_chains/internal/Tile_seams_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Tile_shares.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -101,6 +103,28 @@ points.
     \cgalParamType{a callable `void(const Lex_optimal_chains::Tile_report&, PolygonMesh&)`}
     \cgalParamDefault{none}
   \cgalParamNEnd
+  \cgalParamNBegin{tile_share}
+    \cgalParamDescription{the share of the tiles that this call reconstructs, when the tiles are
+                          dealt out to several processes (`Lex_optimal_chains::Tile_share`): the
+                          other tiles are left empty, and their `Tile_report` says so. Each
+                          process calls the function with the same points and parameters and
+                          its own share; the union of the shares is the result of one call with
+                          every tile, tile for tile}
+    \cgalParamType{`Lex_optimal_chains::Tile_share`}
+    \cgalParamDefault{every tile (`Tile_share{0, 1}`)}
+  \cgalParamNEnd
+  \cgalParamNBegin{measure_tile_memory}
+    \cgalParamDescription{if `true` and the tiles run one at a time (one thread), the peak resident
+                          size of the process is measured during each tile
+                          (`Tile_report::peak_memory_bytes`) and over the call
+                          (`Tiled_surface_report::peak_memory_bytes`). On Linux only: the peak
+                          is reset before each tile (`/proc/self/clear_refs`), so the peak that
+                          the process reports afterwards (`getrusage()`) no longer includes what
+                          came before the first tile; `Tiled_surface_report::peak_memory_bytes`
+                          does}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
   \cgalParamNBegin{coefficient_field}
     \cgalParamDescription{the coefficients of the chains of the tiles (see `lex_optimal_open_surface_reconstruction()`)}
     \cgalParamType{`Lex_optimal_chains::Coefficient_field`}
@@ -117,7 +141,7 @@ points.
 
 \throws Lex_optimal_chains::Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`,
 `TOO_FEW_POINTS`, `INVALID_PARAMETER` (a tile size that is not positive or gives one tile, a
-seam spacing out of its range, a tile corner with no input point near it: the seams run
+seam spacing out of its range, a share with no tiles (`count` 0, or `index` not below it), a tile corner with no input point near it: the seams run
 through the points), or the error of the first tile (in the order of the tiles) that cannot
 be reconstructed, its tile named in the message (an exception of the visitor becomes a
 `std::runtime_error` naming the tile). `tile_meshes` is then unchanged.
@@ -141,8 +165,15 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
   if constexpr(!parameters::is_default_parameter<NamedParameters, LOC::internal_np::tile_visitor_t>::value)
     visitor = get_parameter(np, LOC::internal_np::tile_visitor);
   std::mutex visitor_mutex;
+  const LOC::Tile_share share = choose_parameter(get_parameter(np, LOC::internal_np::tile_share), LOC::Tile_share());
+  if(share.count == 0 || share.index >= share.count)
+    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                           "the tile share " + std::to_string(share.index) + " of " + std::to_string(share.count) +
+                             " does not exist (shares 0 to count - 1, count at least 1)");
+  const bool measure_memory = choose_parameter(get_parameter(np, LOC::internal_np::measure_tile_memory), false);
 
   LOC::Tiled_surface_report report;
+  report.share = share;
   LOC::internal::Stopwatch total, watch;
   std::vector<Point> pts = LOC::internal::finite_points<Point>(points, point_map);
   // Sorted and without duplicates: each tile gets its points in one order whatever the input's
@@ -193,30 +224,50 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
   }
   report.seam_seconds = watch.lap();
 
-  // the tiles, independently (each on one thread); the first error in the order of the tiles wins
+  // the tiles of this call's share, independently (each on one thread); the first error in the
+  // order of the tiles wins
+  std::vector<std::size_t> tile_cost(seams.number_of_tiles());
+  for(std::size_t t = 0; t < tile_cost.size(); ++t) tile_cost[t] = tile_points[t].size();
+  const std::vector<std::size_t> share_of = LOC::internal::deal_tiles(tile_cost, share.count);
+  std::vector<std::size_t> mine;
+  for(std::size_t t = 0; t < share_of.size(); ++t)
+    if(share_of[t] == share.index) mine.push_back(t);
   std::vector<PolygonMesh> meshes(seams.number_of_tiles());
   std::vector<LOC::Tile_report> tiles(seams.number_of_tiles());
+  for(std::size_t t = 0; t < tiles.size(); ++t) {
+    tiles[t].column = t % seams.columns();
+    tiles[t].row = t / seams.columns();
+    tiles[t].number_of_points = tile_points[t].size();
+    tiles[t].number_of_cycle_vertices = cycles[t].size() - 1;
+    tiles[t].share = share_of[t];
+  }
   std::vector<std::exception_ptr> errors(seams.number_of_tiles());
   LOC::internal::Parallel_blocks parallel(threads, 2);
-  report.number_of_threads = parallel.is_parallel(meshes.size()) ? threads : 1;
-  parallel.run(0, meshes.size(), 1, meshes.size(), [&](std::size_t t, std::size_t, std::size_t) {
+  report.number_of_threads = parallel.is_parallel(mine.size()) ? threads : 1;
+  // the peak of each tile: only when they run one at a time (the peak is the process's)
+  const bool measure = measure_memory && !parallel.is_parallel(mine.size()) && LOC::internal::peak_resident_bytes() > 0;
+  if(measure) report.peak_memory_bytes = LOC::internal::peak_resident_bytes();
+  parallel.run(0, mine.size(), 1, mine.size(), [&](std::size_t m, std::size_t, std::size_t) {
+    const std::size_t t = mine[m];
     LOC::internal::Stopwatch tile_watch;
+    const bool measured = measure && LOC::internal::reset_peak_resident_bytes();
     LOC::Tile_report& r = tiles[t];
-    r.column = t % seams.columns();
-    r.row = t / seams.columns();
-    r.number_of_points = tile_points[t].size();
-    r.number_of_cycle_vertices = cycles[t].size() - 1;
     try {
       const auto open = lex_optimal_open_surface_reconstruction(
         tile_points[t], std::vector<std::vector<Point>>{cycles[t]}, meshes[t],
         LOC::parameters::remove_blocking_points(
           true, LOC::parameters::drop_boundary_triangles(
                   true, LOC::parameters::coefficient_field(field, LOC::parameters::keep_non_manifold(keep)))));
+      r.reconstructed = true;
       r.number_of_removed_points = open.number_of_removed_points;
       r.mesh_vertices = open.mesh_vertices;
       r.mesh_faces = open.mesh_faces;
       std::vector<Point>().swap(tile_points[t]);
       r.seconds = tile_watch.lap();
+      if(measured) {
+        r.peak_memory_bytes = LOC::internal::peak_resident_bytes();
+        report.peak_memory_bytes = (std::max)(report.peak_memory_bytes, r.peak_memory_bytes);
+      }
       if(visitor) {
         std::lock_guard<std::mutex> lock(visitor_mutex);
         visitor(r, meshes[t]);

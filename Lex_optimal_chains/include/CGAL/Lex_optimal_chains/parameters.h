@@ -29,6 +29,8 @@ enum robust_t { robust };
 enum smoothing_neighbors_t { smoothing_neighbors };
 enum seam_spacing_t { seam_spacing };
 enum tile_visitor_t { tile_visitor };
+enum tile_share_t { tile_share };
+enum measure_tile_memory_t { measure_tile_memory };
 
 } // namespace internal_np
 
@@ -78,6 +80,11 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(smoothing_neighbors)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(seam_spacing)
 /// Called with each tile of `lex_optimal_tiled_surface_reconstruction()` as soon as it is reconstructed (to write it and free it).
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_visitor)
+/// The share (a `Tile_share`) of the tiles of `lex_optimal_tiled_surface_reconstruction()` that
+/// this call reconstructs, when the tiles are dealt out to several processes.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_share)
+/// Measures the peak resident memory of the process during each tile of `lex_optimal_tiled_surface_reconstruction()` (Linux).
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(measure_tile_memory)
 
 #undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
 
