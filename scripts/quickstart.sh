@@ -18,6 +18,8 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make ccache libcgal-dev libcgal-demo libeigen3-dev libtbb-dev libgmp-dev
           libmpfr-dev libboost-dev libboost-timer-dev libcli11-dev nlohmann-json3-dev doxygen)
+# the tiles over MPI ranks (lex_reconstruct_mpi) and their test with 2 and 3 ranks
+if [ "$mode" = test ]; then packages+=(libopenmpi-dev openmpi-bin); fi
 # the Polyhedron demo (Qt5, QtScript, CGAL's Qt5 headers) and its headless run (Xvfb, Mesa)
 if [ "$mode" != run ]; then
   packages+=(qtbase5-dev qtscript5-dev libqt5svg5-dev libqt5opengl5-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri)

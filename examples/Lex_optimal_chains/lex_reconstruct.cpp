@@ -10,6 +10,7 @@
 //   lex_reconstruct tiles INPUT OUTPUT_DIR --tile-size S [--seam-spacing V] [--merged FILE]
 //                   [--classes C,...] [--coefficients z2|q] [--keep-non-manifold] [--threads N]
 //                   [--ascii] [--json]
+//   mpirun -np K lex_reconstruct_mpi tiles ...   (the same, the tiles dealt out to K ranks)
 //
 // INPUT: points as XYZ, PLY, OFF or uncompressed LAS (1.0 to 1.4; --classes keeps the points of
 // these classifications). OUTPUT: a mesh as OFF, PLY (binary unless --ascii) or
@@ -17,7 +18,11 @@
 // Boundary FILE: CGAL's polylines text format, one closed polyline per line:
 // "n x1 y1 z1 ... xn yn zn" with the last point equal to the first.
 // tiles: one mesh per tile in OUTPUT_DIR (created if missing), tile_C_R.ply for the tile of
-// column C and row R, and with --merged their union, welded at the seams.
+// column C and row R, and with --merged their union, welded at the seams. Under MPI
+// (lex_reconstruct_mpi, built when CMake finds MPI) every rank reads the input and computes
+// the seams; the tiles are dealt out to the ranks (balanced by their points), each rank
+// writes its own; the first rank then makes the union from the tile files. The files are
+// byte for byte those of one process.
 // On error: a one-line reason on stderr, exit code 1, and no output file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -30,6 +35,8 @@
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 #include <CGAL/Lex_optimal_chains/IO/input_files.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include "Process_group.h"
 
 #include <CLI/CLI.hpp>
 #include <boost/timer/progress_display.hpp>
@@ -48,6 +55,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -378,96 +386,248 @@ struct Tiles_options
   std::vector<int> classes; // of a LAS input (empty: all)
 };
 
-static int run_tiles(const std::string& input, const std::string& directory, const Tiles_options& t,
-                     const Output_options& options)
+// An error already reported by another rank: this rank exits with code 1 and says nothing.
+struct Reported_by_another_rank : std::runtime_error
 {
-  if(t.coefficients != "z2" && t.coefficients != "q")
-    throw std::invalid_argument("--coefficients must be z2 or q, not '" + t.coefficients + "'");
-  // the directory: an existing one, or one created (with the first tile) in an existing
-  // directory; checked writable before the work
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const bool exists = fs::exists(directory, error);
-  if(exists && !fs::is_directory(directory, error)) throw std::runtime_error("'" + directory + "' is not a directory");
-  const fs::path parent = exists ? fs::path(directory) : fs::absolute(fs::path(directory), error).parent_path();
-  if(!fs::is_directory(parent, error))
-    throw std::runtime_error("cannot create the tile directory '" + directory + "': no directory " + parent.string());
-  { // writable? (Output_file throws if not)
-    Output_file probe((parent / ".lex_reconstruct_probe.ply").string());
+  Reported_by_another_rank() : std::runtime_error("reported by another rank") {}
+};
+
+// Where an error comes in the order of the work: -1 before the tiles, the tile's row and column
+// for the error of a tile (the library names it: "tile (C, R): ..."), none for no error.
+constexpr long long no_error = std::numeric_limits<long long>::max();
+
+static long long error_order(const std::exception_ptr& error)
+{
+  try {
+    std::rethrow_exception(error);
+  } catch(const std::exception& e) {
+    unsigned long column = 0, row = 0;
+    if(std::sscanf(e.what(), "tile (%lu, %lu):", &column, &row) == 2) return (static_cast<long long>(row) << 32) + column;
+  } catch(...) {
   }
+  return -1;
+}
+
+// Every rank calls this after a stage, with the error it met (or none). If some rank met one,
+// `undo` is called on every rank (each removes what it wrote), then the first error in the
+// order of the work (of the lowest rank among equals) is thrown by its rank, and the others
+// throw Reported_by_another_rank: one line on stderr, whatever the number of ranks.
+static void settle_errors(const Process_group& group, const std::exception_ptr& error, const std::function<void()>& undo)
+{
+  const long long order = error ? error_order(error) : no_error;
+  const long long first = group.min(order);
+  if(first == no_error) return;
+  undo();
+  group.barrier();
+  const long long reporter = group.min(order == first ? static_cast<long long>(group.rank()) : no_error);
+  if(static_cast<long long>(group.rank()) == reporter) std::rethrow_exception(error);
+  throw Reported_by_another_rank();
+}
+
+// The output directory of the tiles: an existing one, or one created (by the first rank to
+// write a tile) in an existing directory, and removed again if the command fails.
+class Tile_directory
+{
+public:
+  Tile_directory(const std::string& directory, const Process_group& group) : directory_(directory)
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    existed_ = fs::exists(directory, error);
+    if(existed_ && !fs::is_directory(directory, error)) throw std::runtime_error("'" + directory + "' is not a directory");
+    const fs::path parent = existed_ ? fs::path(directory) : fs::absolute(fs::path(directory), error).parent_path();
+    if(!fs::is_directory(parent, error))
+      throw std::runtime_error("cannot create the tile directory '" + directory + "': no directory " + parent.string());
+    // writable? (Output_file throws if not; one probe per rank)
+    Output_file probe((parent / (".lex_reconstruct_probe_" + std::to_string(group.rank()) + ".ply")).string());
+  }
+  std::string tile_path(std::size_t column, std::size_t row) const
+  {
+    return (std::filesystem::path(directory_) / ("tile_" + std::to_string(column) + "_" + std::to_string(row) + ".ply")).string();
+  }
+  void write(const Mesh& mesh, std::size_t column, std::size_t row, bool ascii)
+  {
+    std::error_code error;
+    std::filesystem::create_directory(directory_, error); // false, without error, if another rank made it
+    if(error) throw std::runtime_error("cannot create the tile directory '" + directory_ + "' (" + error.message() + ")");
+    const std::string path = tile_path(column, row);
+    Output_file(path).write(mesh, ascii);
+    written_.push_back(path);
+  }
+  // the tiles this rank wrote
+  void remove_written()
+  {
+    std::error_code error;
+    for(const std::string& path : written_) std::filesystem::remove(path, error);
+    written_.clear();
+  }
+  // the directory, if this command created it (once every rank has removed its tiles)
+  void remove_if_created()
+  {
+    std::error_code error;
+    if(!existed_) std::filesystem::remove(directory_, error); // only if empty
+  }
+private:
+  std::string directory_;
+  bool existed_ = false;
+  std::vector<std::string> written_;
+};
+
+// The union of the tiles, from the tile files: so that one process and several ranks, which
+// write the same files, make the same union byte for byte.
+static LOC::Tile_merge_report merge_tile_files(const Tile_directory& directory, const LOC::Tiled_surface_report& r,
+                                               LOC::Coefficient_field field, Mesh& merged)
+{
+  std::vector<Mesh> tiles(r.tiles.size());
+  for(std::size_t t = 0; t < tiles.size(); ++t) {
+    const std::string path = directory.tile_path(r.tiles[t].column, r.tiles[t].row);
+    if(!CGAL::IO::read_polygon_mesh(path, tiles[t]))
+      throw std::runtime_error("cannot read back the tile '" + path + "' for the union");
+  }
+  LOC::Tile_merge_report m = LOC::merge_tile_meshes(tiles, merged, field);
+  merged.collect_garbage(); // the closed pockets removed: the writer numbers the vertices left
+  return m;
+}
+
+// The report of every rank's tiles, on every rank: a tile's numbers come from the rank that
+// made it (the others have zeros), the times and the peak memory are the largest over the ranks.
+static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_report& r)
+{
+  constexpr std::size_t fields = 6;
+  std::vector<double> values(fields * r.tiles.size(), 0);
+  for(std::size_t t = 0; t < r.tiles.size(); ++t) {
+    const LOC::Tile_report& tile = r.tiles[t];
+    if(!tile.reconstructed) continue;
+    const double v[fields] = {1, double(tile.number_of_removed_points), double(tile.mesh_vertices),
+                              double(tile.mesh_faces), tile.seconds, double(tile.peak_memory_bytes)};
+    std::copy(v, v + fields, values.begin() + std::ptrdiff_t(fields * t));
+  }
+  values = group.sum(values);
+  for(std::size_t t = 0; t < r.tiles.size(); ++t) {
+    LOC::Tile_report& tile = r.tiles[t];
+    const double* v = values.data() + fields * t;
+    tile.reconstructed = v[0] > 0;
+    tile.number_of_removed_points = std::size_t(v[1]);
+    tile.mesh_vertices = std::size_t(v[2]);
+    tile.mesh_faces = std::size_t(v[3]);
+    tile.seconds = v[4];
+    tile.peak_memory_bytes = std::size_t(v[5]);
+  }
+  r.seam_seconds = group.max(r.seam_seconds);
+  r.tiles_seconds = group.max(r.tiles_seconds);
+  r.total_seconds = group.max(r.total_seconds);
+}
+
+static nlohmann::json tiles_json(const std::string& input, const std::string& directory, const Process_group& group,
+                                 const LOC::Tiled_surface_report& r, bool memory_measured)
+{
+  nlohmann::json j;
+  j["input"] = input;
+  j["output"] = directory;
+  j["points"] = r.number_of_input_points;
+  j["tiles"] = r.tiles.size();
+  j["columns"] = r.columns;
+  j["rows"] = r.rows;
+  j["tile_width"] = r.tile_width;
+  j["tile_height"] = r.tile_height;
+  j["seam_spacing"] = r.seam_spacing;
+  j["seam_points"] = r.number_of_seam_points;
+  j["ranks"] = group.size();
+  j["threads"] = r.number_of_threads;
+  j["seam_s"] = r.seam_seconds;
+  j["tiles_s"] = r.tiles_seconds;
+  j["tile_memory_measured"] = memory_measured;
+  nlohmann::json per_tile = nlohmann::json::array();
+  for(const LOC::Tile_report& tile : r.tiles)
+    per_tile.push_back({{"column", tile.column}, {"row", tile.row}, {"rank", tile.share}, {"points", tile.number_of_points},
+                        {"cycle_vertices", tile.number_of_cycle_vertices}, {"removed_points", tile.number_of_removed_points},
+                        {"vertices", tile.mesh_vertices}, {"faces", tile.mesh_faces}, {"seconds", tile.seconds},
+                        {"peak_rss_mb", double(tile.peak_memory_bytes) / (1024.0 * 1024.0)}});
+  j["per_tile"] = per_tile;
+  return j;
+}
+
+static int run_tiles(const std::string& input, const std::string& directory, const Tiles_options& t,
+                     const Output_options& options, const Process_group& group)
+{
+  // the checks, on every rank; then the directory is created by the first tile written
+  std::unique_ptr<Tile_directory> tile_directory;
   std::unique_ptr<Output_file> merged_file;
-  if(!t.merged.empty()) merged_file.reset(new Output_file(t.merged));
-  const auto tile_path = [&](std::size_t c, std::size_t r) {
-    return (fs::path(directory) / ("tile_" + std::to_string(c) + "_" + std::to_string(r) + ".ply")).string();
-  };
-  const std::vector<Point> points = LOC::IO::read_point_file<Point>(input, t.classes);
+  std::exception_ptr error;
+  try {
+    if(t.coefficients != "z2" && t.coefficients != "q")
+      throw std::invalid_argument("--coefficients must be z2 or q, not '" + t.coefficients + "'");
+    tile_directory.reset(new Tile_directory(directory, group));
+    if(!t.merged.empty() && group.is_root()) merged_file.reset(new Output_file(t.merged));
+  } catch(...) {
+    error = std::current_exception();
+  }
+  settle_errors(group, error, [] {});
   const LOC::Coefficient_field field = t.coefficients == "z2" ? LOC::Coefficient_field::Z2 : LOC::Coefficient_field::Q;
-  // Each tile is written as soon as it is reconstructed, and freed unless the union is asked
-  // for: the memory is that of the tiles being reconstructed. The directory is created with the
-  // first tile; on an error, the tiles written (and the directory, if created) are removed.
-  std::vector<std::string> written;
+
+  // This rank's share of the tiles. Each tile is written as soon as it is reconstructed, and
+  // freed: the memory is that of the tiles being reconstructed. On an error, the tiles
+  // written (and the directory, if created) are removed.
   CGAL::Real_timer io;
   auto write_tile = [&](const LOC::Tile_report& tile, Mesh& mesh) {
     io.start();
-    if(!exists && written.empty() && !fs::create_directory(directory, error))
-      throw std::runtime_error("cannot create the tile directory '" + directory + "' (" + error.message() + ")");
-    const std::string path = tile_path(tile.column, tile.row);
-    Output_file(path).write(mesh, options.ascii);
-    written.push_back(path);
-    if(!merged_file) mesh = Mesh();
+    tile_directory->write(mesh, tile.column, tile.row, options.ascii);
+    mesh = Mesh();
     io.stop();
   };
-  std::vector<Mesh> tiles;
+  const bool measure_memory = options.json && options.threads == 1;
   LOC::Tiled_surface_report r;
   try {
+    const std::vector<Point> points = LOC::IO::read_point_file<Point>(input, t.classes);
+    std::vector<Mesh> tiles;
     r = CGAL::lex_optimal_tiled_surface_reconstruction(
       points, t.tile_size, tiles,
       LOC::parameters::seam_spacing(t.seam_spacing,
       LOC::parameters::coefficient_field(field,
       LOC::parameters::keep_non_manifold(options.keep_non_manifold,
       LOC::parameters::number_of_threads(options.threads,
-      LOC::parameters::tile_visitor(write_tile))))));
+      LOC::parameters::tile_share(LOC::Tile_share{group.rank(), group.size()},
+      LOC::parameters::measure_tile_memory(measure_memory,
+      LOC::parameters::tile_visitor(write_tile))))))));
   } catch(...) {
-    for(const std::string& path : written) fs::remove(path, error);
-    if(!exists && !written.empty()) fs::remove(directory, error);
-    throw;
+    error = std::current_exception();
   }
+  auto undo = [&] {
+    tile_directory->remove_written();
+    group.barrier();
+    if(group.is_root()) tile_directory->remove_if_created();
+  };
+  settle_errors(group, error, undo);
+  // the peak of the rank, before and during the tiles (measuring the tiles resets getrusage's)
+  const double peak_mb = group.max(std::max(peak_rss_mb(), double(r.peak_memory_bytes) / (1024.0 * 1024.0)));
+  gather_tile_reports(group, r);
+  const double write_s = group.max(io.time());
+
+  // the union, by the first rank, from the files of all (written once every rank is here)
   Mesh merged;
   LOC::Tile_merge_report m;
-  CGAL::Real_timer merged_io;
-  if(merged_file) {
-    m = LOC::merge_tile_meshes(tiles, merged, field);
-    merged.collect_garbage(); // the closed pockets removed: the writer numbers the vertices left
-    merged_io.start();
-    merged_file->write(merged, options.ascii);
-    merged_io.stop();
+  CGAL::Real_timer merge_watch, merged_io;
+  if(!t.merged.empty() && group.is_root()) {
+    try {
+      merge_watch.start();
+      m = merge_tile_files(*tile_directory, r, field, merged);
+      merge_watch.stop();
+      merged_io.start();
+      merged_file->write(merged, options.ascii);
+      merged_io.stop();
+    } catch(...) {
+      error = std::current_exception();
+    }
   }
+  settle_errors(group, error, undo);
+  if(!group.is_root()) return 0;
   if(options.json) {
-    nlohmann::json j;
-    j["input"] = input;
-    j["output"] = directory;
-    j["points"] = r.number_of_input_points;
-    j["tiles"] = r.tiles.size();
-    j["columns"] = r.columns;
-    j["rows"] = r.rows;
-    j["tile_width"] = r.tile_width;
-    j["tile_height"] = r.tile_height;
-    j["seam_spacing"] = r.seam_spacing;
-    j["seam_points"] = r.number_of_seam_points;
-    j["threads"] = r.number_of_threads;
-    j["seam_s"] = r.seam_seconds;
-    j["tiles_s"] = r.tiles_seconds;
-    j["merge_s"] = m.seconds;
-    j["write_s"] = io.time() + merged_io.time(); // the tiles' within tiles_s
-    j["total_s"] = r.total_seconds + m.seconds + merged_io.time();
-    j["peak_rss_mb"] = peak_rss_mb();
-    nlohmann::json per_tile = nlohmann::json::array();
-    for(const LOC::Tile_report& tile : r.tiles)
-      per_tile.push_back({{"column", tile.column}, {"row", tile.row}, {"points", tile.number_of_points},
-                          {"cycle_vertices", tile.number_of_cycle_vertices}, {"removed_points", tile.number_of_removed_points},
-                          {"vertices", tile.mesh_vertices}, {"faces", tile.mesh_faces}, {"seconds", tile.seconds}});
-    j["per_tile"] = per_tile;
-    if(merged_file) {
+    nlohmann::json j = tiles_json(input, directory, group, r, measure_memory);
+    j["merge_s"] = merge_watch.time();
+    j["write_s"] = write_s + merged_io.time(); // the tiles' within tiles_s
+    j["total_s"] = r.total_seconds + merge_watch.time() + merged_io.time();
+    j["peak_rss_mb"] = peak_mb;
+    if(!t.merged.empty()) {
       j["merged"] = t.merged;
       nlohmann::json mj;
       add_mesh_statistics(mj, merged);
@@ -480,7 +640,7 @@ static int run_tiles(const std::string& input, const std::string& directory, con
     std::cout << j.dump() << std::endl;
   } else {
     std::cerr << "wrote " << r.tiles.size() << " tiles (" << r.columns << " x " << r.rows << ") in " << directory;
-    if(merged_file)
+    if(!t.merged.empty())
       std::cerr << " and " << t.merged << ": " << m.mesh_vertices << " vertices, " << m.mesh_faces << " faces";
     std::cerr << "\n";
   }
@@ -489,6 +649,7 @@ static int run_tiles(const std::string& input, const std::string& directory, con
 
 int main(int argc, char** argv)
 {
+  Process_group group(argc, argv); // MPI_Init under lex_reconstruct_mpi
   CLI::App app{"Surface reconstruction as a lexicographic optimal chain (Lex_optimal_chains)"};
   app.require_subcommand(1);
   std::string input, output, boundary_file, coefficients = "q";
@@ -551,18 +712,23 @@ int main(int argc, char** argv)
     app.parse(argc, argv);
     if(open->parsed() && boundary_file.empty() && !auto_boundary)
       throw CLI::RequiredError("--boundary or --auto-boundary");
+    if(group.size() > 1 && !tiles->parsed())
+      throw CLI::ValidationError("only the tiles subcommand runs on several MPI ranks (" +
+                                 std::to_string(group.size()) + " here): run the others with one");
   } catch(const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return group.is_root() ? app.exit(e) : 0;
   } catch(const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return group.is_root() ? app.exit(e) : 0;
   } catch(const CLI::ParseError& e) { // one line and exit code 1, as for bad input
-    std::cerr << "lex_reconstruct: error: " << e.what() << " (see --help)" << std::endl;
+    if(group.is_root()) std::cerr << "lex_reconstruct: error: " << e.what() << " (see --help)" << std::endl;
     return 1;
   }
   try {
     if(closed->parsed()) return run_closed(input, output, closed_options, options);
-    if(tiles->parsed()) return run_tiles(input, output, tiles_options, options);
+    if(tiles->parsed()) return run_tiles(input, output, tiles_options, options, group);
     return run_open(input, output, boundary_file, auto_boundary, coefficients, remove_blocking, drop, keep, options);
+  } catch(const Reported_by_another_rank&) {
+    return 1;
   } catch(const std::exception& e) {
     std::cerr << "lex_reconstruct: error: " << e.what() << std::endl;
     return 1;
