@@ -20,12 +20,15 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <set>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -122,6 +125,50 @@ LOC::Tiled_surface_report check_seams(const std::vector<Point>& points, double t
   return r;
 }
 
+// The faces of a mesh in its order, each as the points of its corners from its half-edge.
+std::vector<Triangle> faces_in_order(const Mesh& mesh)
+{
+  std::vector<Triangle> result;
+  for(auto f : mesh.faces()) {
+    Triangle t;
+    int k = 0;
+    for(auto v : mesh.vertices_around_face(mesh.halfedge(f))) t[k++] = mesh.point(v);
+    result.push_back(t);
+  }
+  return result;
+}
+
+// The out-of-core reconstruction of `points` (given `copies` times, in another order each
+// time) gives the tiles of the reconstruction in memory, face for face, and leaves no file.
+void check_out_of_core(const std::vector<Point>& points, double tile_size, const std::vector<Mesh>& tiles,
+                       const LOC::Tiled_surface_report& r, int copies)
+{
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("test_tiled_surface_buckets_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::size_t passes = 0;
+  auto source = [&](const auto& f) {
+    ++passes;
+    for(int c = 0; c < copies; ++c)
+      for(std::size_t i = 0; i < points.size(); ++i) f(points[c % 2 == 0 ? i : points.size() - 1 - i]);
+  };
+  std::vector<Mesh> streamed;
+  const LOC::Tiled_surface_report s =
+    CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(source, tile_size, dir.string(), streamed,
+                                                               LOC::parameters::number_of_threads(2u));
+  assert(passes == 2);
+  assert(s.number_of_input_points == r.number_of_input_points && s.seam_spacing == r.seam_spacing);
+  assert(s.number_of_seam_points == r.number_of_seam_points && streamed.size() == tiles.size());
+  for(std::size_t t = 0; t < tiles.size(); ++t) {
+    assert(s.tiles[t].number_of_points == r.tiles[t].number_of_points);
+    assert(faces_in_order(streamed[t]) == faces_in_order(tiles[t]));
+  }
+  assert(fs::is_empty(dir)); // the bucket files are gone
+  fs::remove(dir);
+  std::cout << "  out of core (points given " << copies << " times): the same " << tiles.size()
+            << " tiles, face for face, seams " << s.seam_seconds << " s" << std::endl;
+}
+
 void test_synthetic_terrain()
 {
   std::cout << "synthetic terrain with buildings, 3 x 3 tiles" << std::endl;
@@ -176,6 +223,8 @@ void test_synthetic_terrain()
   CGAL::lex_optimal_tiled_surface_reconstruction(shuffled, 34, again);
   for(std::size_t t = 0; t < tiles.size(); ++t) assert(triangles_of(again[t]) == triangles_of(tiles[t]));
   std::cout << "  same tiles from every point given twice" << std::endl;
+  check_out_of_core(points, 34, tiles, r, 1);
+  check_out_of_core(points, 34, tiles, r, 2);
 
   // Dealt out to 2 and to 3 processes (Tile_share): every tile in exactly one share, with the
   // mesh of the call with every tile; the shares balanced as the deal says (longest first: no
@@ -195,11 +244,11 @@ void test_synthetic_terrain()
       assert(part.size() == tiles.size() && s.share.index == index && s.share.count == count);
       for(std::size_t t = 0; t < tiles.size(); ++t) {
         assert(s.tiles[t].reconstructed == (s.tiles[t].share == index));
-        assert(s.tiles[t].number_of_points == r.tiles[t].number_of_points);
         if(!s.tiles[t].reconstructed) {
-          assert(part[t].is_empty() && s.tiles[t].mesh_faces == 0);
+          assert(part[t].is_empty() && s.tiles[t].mesh_faces == 0 && s.tiles[t].number_of_points == 0);
           continue;
         }
+        assert(s.tiles[t].number_of_points == r.tiles[t].number_of_points);
         ++times_made[t];
         load[index] += s.tiles[t].number_of_points;
         assert(triangles_of(part[t]) == triangles_of(tiles[t]));
@@ -240,6 +289,7 @@ void test_flat_cloud()
   const LOC::Tiled_surface_report r = check_seams(points, 21, 2, tiles, merged);
   assert(r.columns == 2 && r.rows == 3);
   for(auto v : merged.vertices()) assert(merged.point(v).z() == 0); // no frame point left
+  check_out_of_core(points, 21, tiles, r, 1);
 }
 
 void test_aerial_scan(const std::string& data)
@@ -252,7 +302,8 @@ void test_aerial_scan(const std::string& data)
   }
   std::vector<Mesh> tiles;
   Mesh merged;
-  check_seams(points, 60, 2, tiles, merged);
+  const LOC::Tiled_surface_report r = check_seams(points, 60, 2, tiles, merged);
+  check_out_of_core(points, 60, tiles, r, 1);
 }
 
 void test_bad_input()
@@ -283,6 +334,35 @@ void test_bad_input()
   std::vector<Point> nan = points;
   nan[7] = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   expect_error(Code::NON_FINITE_COORDINATE, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(nan, 5., tiles); });
+  assert(tiles.size() == 1 && tiles[0].is_empty()); // unchanged
+
+  // out of core: the same errors, and a bucket directory that does not exist; no file left
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("test_tiled_surface_bad_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  auto from = [](const std::vector<Point>& v) { return [&v](const auto& f) { for(const Point& p : v) f(p); }; };
+  const std::string d = dir.string();
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 0., d, tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 10., d, tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(holed), 5., d, tiles); });
+  expect_error(Code::EMPTY_INPUT, [&] {
+    const std::vector<Point> none;
+    CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(none), 5., d, tiles);
+  });
+  expect_error(Code::NON_FINITE_COORDINATE, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(nan), 5., d, tiles); });
+  const std::vector<Point> three(points.begin(), points.begin() + 3);
+  std::vector<Point> repeated;
+  for(int k = 0; k < 50; ++k) repeated.insert(repeated.end(), three.begin(), three.end());
+  const CGAL::Bbox_3 box3 = CGAL::bbox_3(three.begin(), three.end());
+  const double half = 0.6 * std::max(box3.xmax() - box3.xmin(), box3.ymax() - box3.ymin()); // 2 x 2 tiles at most
+  expect_error(Code::TOO_FEW_POINTS, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(repeated), half, d, tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 0.01, d, tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(points, 0.01, tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] {
+    CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 5., (dir / "missing").string(), tiles);
+  });
+  assert(fs::is_empty(dir));
+  fs::remove(dir);
   assert(tiles.size() == 1 && tiles[0].is_empty()); // unchanged
 }
 

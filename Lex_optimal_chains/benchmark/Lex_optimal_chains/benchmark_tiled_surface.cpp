@@ -8,8 +8,14 @@
 // fresh process (peak memory is per process); the one-thread runs on one CPU. Above 5M points
 // only the Delaunay triangulation and the streamed tiles run.
 //
+// With --ranks (when lex_reconstruct_mpi was built): the same terrains written to binary PLY
+// and tiled by `mpirun -np K lex_reconstruct_mpi tiles` on 1 and 2 ranks, one thread each: the
+// tile phase (the slowest rank's), the whole command, the peak memory of a rank and of a tile.
+//
 //   benchmark_tiled_surface [N ...] [--repeat R]     (default: 1,000,000 and 5,000,000)
+//   benchmark_tiled_surface --ranks [N ...]          the MPI table
 //   benchmark_tiled_surface --one MODE N [THREADS]   one measurement (delaunay | untiled | tiled | streamed), JSON
+//   benchmark_tiled_surface --one write N FILE       writes the terrain of N points to FILE (.ply)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Real_timer.h>
@@ -17,11 +23,19 @@
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/lex_optimal_tiled_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
+#include <CGAL/IO/write_points.h>
 
 #include "benchmark_support.h"
 
+#if defined(LEX_RECONSTRUCT_MPI) && defined(MPIEXEC)
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -86,10 +100,76 @@ static int one(const std::string& mode, std::size_t n, unsigned threads)
   return print_measurement(json.str(), base_mb);
 }
 
+#if defined(LEX_RECONSTRUCT_MPI) && defined(MPIEXEC)
+// The tile phase of lex_reconstruct_mpi on 1 and 2 ranks (one thread each), on the terrains
+// written to files; the tile phase is the slowest rank's.
+static int rank_table(const std::string& self, const std::vector<std::size_t>& sizes)
+{
+  namespace fs = std::filesystem;
+  const fs::path work = fs::temp_directory_path() / ("benchmark_tiled_surface_" + std::to_string(::getpid()));
+  fs::create_directories(work);
+  std::cout << std::fixed << std::setprecision(3)
+            << "   points  tiles  ranks  tiles_s  seam_s  total_s  tiles_s/1rank  peak_GB/rank  largest_tile_peak_GB\n";
+  for(std::size_t n : sizes) {
+    const std::string file = (work / ("terrain_" + std::to_string(n) + ".ply")).string();
+    if(std::system((self + " --one write " + std::to_string(n) + " " + file).c_str()) != 0) return 1;
+    double one_rank = 0;
+    for(int ranks : {1, 2}) {
+      const std::string out = (work / ("tiles_" + std::to_string(ranks))).string();
+      const std::string command = std::string(MPIEXEC) + " --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) +
+                                  " " + LEX_RECONSTRUCT_MPI + " tiles " + file + " " + out + " --tile-size " +
+                                  std::to_string(tile_size(n)) + " --json";
+      std::string output;
+      {
+        FILE* p = popen(command.c_str(), "r");
+        char buffer[4096];
+        while(p && fgets(buffer, sizeof buffer, p)) output += buffer;
+        if(!p || pclose(p) != 0) {
+          std::cerr << "failed: " << command << "\n" << output;
+          return 1;
+        }
+      }
+      const nlohmann::json j = nlohmann::json::parse(output);
+      double largest_tile_peak = 0;
+      for(const auto& tile : j["per_tile"]) largest_tile_peak = std::max(largest_tile_peak, tile["peak_rss_mb"].get<double>());
+      std::map<std::string, double> r{{"tiles", j["tiles"].get<double>()}, {"tiles_s", j["tiles_s"].get<double>()},
+                                      {"seam_s", j["seam_s"].get<double>()}, {"total_s", j["total_s"].get<double>()},
+                                      {"rank_peak_rss_mb", j["peak_rss_mb"].get<double>()},
+                                      {"largest_tile_peak_rss_mb", largest_tile_peak}};
+      fs::remove_all(out);
+      if(ranks == 1) one_rank = r["tiles_s"];
+      std::cout << std::setw(9) << n << "  " << std::setw(5) << int(r["tiles"]) << "  " << std::setw(5) << ranks << "  "
+                << std::setw(7) << r["tiles_s"] << "  " << std::setw(6) << r["seam_s"] << "  " << std::setw(7)
+                << r["total_s"] << "  " << std::setw(13) << r["tiles_s"] / one_rank << "  " << std::setw(12)
+                << r["rank_peak_rss_mb"] / 1024 << "  " << std::setw(20) << r["largest_tile_peak_rss_mb"] / 1024
+                << std::endl;
+    }
+    fs::remove(file);
+  }
+  fs::remove_all(work);
+  return 0;
+}
+#endif
+
 int main(int argc, char** argv)
 {
+  if(argc == 5 && std::string(argv[1]) == "--one" && std::string(argv[2]) == "write") {
+    const std::vector<Point> pts = noisy_terrain<Point>(std::stoul(argv[3]));
+    return CGAL::IO::write_points(argv[4], pts, CGAL::parameters::use_binary_mode(true)) ? 0 : 1;
+  }
   if((argc == 4 || argc == 5) && std::string(argv[1]) == "--one")
     return one(argv[2], std::stoul(argv[3]), argc == 5 ? unsigned(std::stoul(argv[4])) : 1u);
+  if(argc >= 2 && std::string(argv[1]) == "--ranks") {
+#if defined(LEX_RECONSTRUCT_MPI) && defined(MPIEXEC)
+    std::vector<std::size_t> sizes;
+    for(int i = 2; i < argc; ++i) sizes.push_back(std::stoul(argv[i]));
+    if(sizes.empty()) sizes = {1000000, 5000000};
+    return rank_table(argv[0], sizes);
+#else
+    std::cerr << "lex_reconstruct_mpi was not built (MPI not found)\n";
+    return 2;
+#endif
+  }
   std::vector<std::size_t> sizes;
   std::size_t repeat = 1;
   if(!parse_sizes(argc, argv, sizes, repeat)) {

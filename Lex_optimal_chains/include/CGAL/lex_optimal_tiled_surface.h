@@ -13,11 +13,10 @@
 #include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Optimal_chain_3.h>
-#include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
-#include <CGAL/Lex_optimal_chains/internal/Peak_memory.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
+#include <CGAL/Lex_optimal_chains/internal/Tile_buckets.h>
 #include <CGAL/Lex_optimal_chains/internal/Tile_seams_3.h>
-#include <CGAL/Lex_optimal_chains/internal/Tile_shares.h>
+#include <CGAL/Lex_optimal_chains/internal/Tiled_reconstruction_3.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -158,57 +157,22 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
   using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
   using Point = typename boost::property_traits<Point_map>::value_type;
   const Point_map point_map = choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map));
-  const unsigned threads = choose_parameter(get_parameter(np, LOC::internal_np::number_of_threads), 1u);
-  const LOC::Coefficient_field field = LOC::internal::coefficient_field_of(np);
-  const bool keep = choose_parameter(get_parameter(np, LOC::internal_np::keep_non_manifold), false);
-  std::function<void(const LOC::Tile_report&, PolygonMesh&)> visitor;
-  if constexpr(!parameters::is_default_parameter<NamedParameters, LOC::internal_np::tile_visitor_t>::value)
-    visitor = get_parameter(np, LOC::internal_np::tile_visitor);
-  std::mutex visitor_mutex;
-  const LOC::Tile_share share = choose_parameter(get_parameter(np, LOC::internal_np::tile_share), LOC::Tile_share());
-  if(share.count == 0 || share.index >= share.count)
-    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
-                           "the tile share " + std::to_string(share.index) + " of " + std::to_string(share.count) +
-                             " does not exist (shares 0 to count - 1, count at least 1)");
-  const bool measure_memory = choose_parameter(get_parameter(np, LOC::internal_np::measure_tile_memory), false);
+  const LOC::internal::Tile_settings<PolygonMesh> settings = LOC::internal::tile_settings<PolygonMesh>(np);
 
   LOC::Tiled_surface_report report;
-  report.share = share;
+  report.share = settings.share;
   LOC::internal::Stopwatch total, watch;
   std::vector<Point> pts = LOC::internal::finite_points<Point>(points, point_map);
   // Sorted and without duplicates: each tile gets its points in one order whatever the input's
   // (the test gives the points shuffled, and each twice).
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  report.number_of_input_points = pts.size();
   if(pts.size() < 4) throw LOC::Input_error(LOC::Input_error_code::TOO_FEW_POINTS, "fewer than 4 distinct points");
-
   const Bbox_3 box = bbox_3(pts.begin(), pts.end());
-  const double width = box.xmax() - box.xmin(), height = box.ymax() - box.ymin();
-  if(!(tile_size > 0) || !std::isfinite(tile_size))
-    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
-                           "the tile size must be positive and finite (it is " + std::to_string(tile_size) + ")");
-  if(!(tile_size < std::max(width, height)))
-    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
-                           "the tile size " + std::to_string(tile_size) + " is not smaller than the cloud (" +
-                             std::to_string(width) + " x " + std::to_string(height) +
-                             "): one tile is the untiled surface (lex_optimal_open_surface_reconstruction)");
-  const double tile_width = width / std::ceil(width / tile_size), tile_height = height / std::ceil(height / tile_size);
-  // the sides of the tiles along the axes that are cut: at least 4 seam spacings
-  const double smallest_side = std::min(width > tile_size ? tile_width : HUGE_VAL, height > tile_size ? tile_height : HUGE_VAL);
-  double spacing = choose_parameter(get_parameter(np, LOC::internal_np::seam_spacing), 0.);
-  if(spacing == 0) spacing = std::min(3 * std::sqrt(std::max(width, 1e-300) * std::max(height, 1e-300) / double(pts.size())),
-                                      smallest_side / 4);
-  if(!(spacing > 0) || !(spacing <= smallest_side / 4))
-    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
-                           "the seam spacing " + std::to_string(spacing) + " must be positive and at most " +
-                             std::to_string(smallest_side / 4) + ", a quarter of the side of a tile");
-  report.tile_width = tile_width;
-  report.tile_height = tile_height;
-  report.seam_spacing = spacing;
+  LOC::internal::set_tile_grid(box, pts.size(), tile_size, settings.seam_spacing, report);
 
   // the seams, and the points of each tile (its region's, then its cycle's seam points)
-  const LOC::internal::Tile_seams_3<Point> seams(pts, tile_size, spacing);
+  const LOC::internal::Tile_seams_3<Point> seams(pts, tile_size, report.seam_spacing);
   report.columns = seams.columns();
   report.rows = seams.rows();
   report.number_of_seam_points = seams.seam_points().size();
@@ -216,79 +180,151 @@ lex_optimal_tiled_surface_reconstruction(const PointRange& points, double tile_s
   for(const Point& p : pts)
     if(!seams.is_seam_point(p)) tile_points[seams.tile_of(p)].push_back(p);
   std::vector<Point>().swap(pts);
-  std::vector<std::vector<Point>> cycles(seams.number_of_tiles());
+  const std::vector<std::vector<Point>> cycles = LOC::internal::tile_cycles(seams);
+  std::vector<std::size_t> cost(seams.number_of_tiles());
   for(std::size_t t = 0; t < cycles.size(); ++t) {
-    cycles[t] = seams.cycle(t % seams.columns(), t / seams.columns());
-    for(std::size_t k = 0; k + 1 < cycles[t].size(); ++k)
-      if(seams.is_seam_point(cycles[t][k])) tile_points[t].push_back(cycles[t][k]);
+    LOC::internal::append_cycle_seam_points(seams, cycles[t], tile_points[t]);
+    cost[t] = tile_points[t].size();
   }
   report.seam_seconds = watch.lap();
 
-  // the tiles of this call's share, independently (each on one thread); the first error in the
-  // order of the tiles wins
-  std::vector<std::size_t> tile_cost(seams.number_of_tiles());
-  for(std::size_t t = 0; t < tile_cost.size(); ++t) tile_cost[t] = tile_points[t].size();
-  const std::vector<std::size_t> share_of = LOC::internal::deal_tiles(tile_cost, share.count);
-  std::vector<std::size_t> mine;
-  for(std::size_t t = 0; t < share_of.size(); ++t)
-    if(share_of[t] == share.index) mine.push_back(t);
-  std::vector<PolygonMesh> meshes(seams.number_of_tiles());
-  std::vector<LOC::Tile_report> tiles(seams.number_of_tiles());
-  for(std::size_t t = 0; t < tiles.size(); ++t) {
-    tiles[t].column = t % seams.columns();
-    tiles[t].row = t / seams.columns();
-    tiles[t].number_of_points = tile_points[t].size();
-    tiles[t].number_of_cycle_vertices = cycles[t].size() - 1;
-    tiles[t].share = share_of[t];
-  }
-  std::vector<std::exception_ptr> errors(seams.number_of_tiles());
-  LOC::internal::Parallel_blocks parallel(threads, 2);
-  report.number_of_threads = parallel.is_parallel(mine.size()) ? threads : 1;
-  // the peak of each tile: only when they run one at a time (the peak is the process's)
-  const bool measure = measure_memory && !parallel.is_parallel(mine.size()) && LOC::internal::peak_resident_bytes() > 0;
-  if(measure) report.peak_memory_bytes = LOC::internal::peak_resident_bytes();
-  parallel.run(0, mine.size(), 1, mine.size(), [&](std::size_t m, std::size_t, std::size_t) {
-    const std::size_t t = mine[m];
-    LOC::internal::Stopwatch tile_watch;
-    const bool measured = measure && LOC::internal::reset_peak_resident_bytes();
-    LOC::Tile_report& r = tiles[t];
-    try {
-      const auto open = lex_optimal_open_surface_reconstruction(
-        tile_points[t], std::vector<std::vector<Point>>{cycles[t]}, meshes[t],
-        LOC::parameters::remove_blocking_points(
-          true, LOC::parameters::drop_boundary_triangles(
-                  true, LOC::parameters::coefficient_field(field, LOC::parameters::keep_non_manifold(keep)))));
-      r.reconstructed = true;
-      r.number_of_removed_points = open.number_of_removed_points;
-      r.mesh_vertices = open.mesh_vertices;
-      r.mesh_faces = open.mesh_faces;
-      std::vector<Point>().swap(tile_points[t]);
-      r.seconds = tile_watch.lap();
-      if(measured) {
-        r.peak_memory_bytes = LOC::internal::peak_resident_bytes();
-        report.peak_memory_bytes = (std::max)(report.peak_memory_bytes, r.peak_memory_bytes);
-      }
-      if(visitor) {
-        std::lock_guard<std::mutex> lock(visitor_mutex);
-        visitor(r, meshes[t]);
-      }
-    } catch(...) {
-      errors[t] = std::current_exception();
-    }
-  });
-  for(std::size_t t = 0; t < errors.size(); ++t) {
-    if(!errors[t]) continue;
-    const std::string where = "tile (" + std::to_string(t % seams.columns()) + ", " + std::to_string(t / seams.columns()) + "): ";
-    try {
-      std::rethrow_exception(errors[t]);
-    } catch(const LOC::Input_error& e) {
-      throw LOC::Input_error(e.code(), where + e.what());
-    } catch(const std::exception& e) { // from the visitor
-      throw std::runtime_error(where + e.what());
-    }
-  }
+  std::vector<PolygonMesh> meshes;
+  LOC::internal::reconstruct_tiles(seams, cycles, cost, [&](std::size_t t) { return std::move(tile_points[t]); },
+                                   settings, meshes, report);
   report.tiles_seconds = watch.lap();
-  report.tiles = std::move(tiles);
+  tile_meshes = std::move(meshes);
+  report.total_seconds = total.lap();
+  return report;
+}
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+The tiled reconstruction of `lex_optimal_tiled_surface_reconstruction()` for clouds too large
+for memory: the points stream through twice, and are bucketed into files, one per tile, so
+that the memory holds the points near the seams and the tiles being reconstructed, not the
+cloud. The tiles, their seams and their meshes are those of
+`lex_optimal_tiled_surface_reconstruction()` on the same points, tile for tile (the order of
+their faces included); only the deal of the tiles to shares (`tile_share`) may differ, since it
+counts the points of a tile before the seams move the points near them.
+
+The passes:
+1. `for_each_point` is called a first time: the bounding box of the points, and their check;
+2. a second time: each point is appended to the bucket file of the cell of the grid that
+   holds it;
+3. each bucket is read, sorted and cleared of duplicates (the number of distinct points sets
+   the default seam spacing);
+4. each bucket is read again for its points near the inner border lines of the grid, from
+   which the seams are made (in memory: a band of the width of the seam spacing along every
+   inner border line);
+5. each tile reads its bucket and takes the points near the seams that fall on its side.
+
+\tparam PointSource a callable such that `for_each_point(f)` calls `f(p)` for every point `p`
+        of the cloud, a `Point_3` with `double` coordinates, the same points on every call
+        (their order does not matter)
+\tparam PolygonMesh a model of `MutableFaceGraph` whose points are of the type of the input points
+
+\param for_each_point the source of the points, called twice
+\param tile_size as in `lex_optimal_tiled_surface_reconstruction()`
+\param bucket_directory an existing directory where a fresh directory is made for the bucket
+       files (24 bytes a point), and removed with them at the end, on an error too
+\param tile_meshes as in `lex_optimal_tiled_surface_reconstruction()`; to keep the memory
+       bounded, give a `tile_visitor` that writes each tile and clears its mesh
+\param np the named parameters of `lex_optimal_tiled_surface_reconstruction()` but `point_map`
+
+\return what was done, tile by tile
+
+\throws Lex_optimal_chains::Input_error as `lex_optimal_tiled_surface_reconstruction()` does, and
+with code `INVALID_PARAMETER` for a bucket directory that does not exist, `WRITE_FAILED` for
+bucket files that cannot be written or read back. `tile_meshes` is then unchanged.
+*/
+template <class PointSource, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Tiled_surface_report
+lex_optimal_tiled_surface_reconstruction_out_of_core(const PointSource& for_each_point, double tile_size,
+                                                     const std::string& bucket_directory,
+                                                     std::vector<PolygonMesh>& tile_meshes,
+                                                     const NamedParameters& np = parameters::default_values())
+{
+  namespace LOC = Lex_optimal_chains;
+  using Point = typename boost::property_traits<typename boost::property_map<PolygonMesh, vertex_point_t>::const_type>::value_type;
+  const LOC::internal::Tile_settings<PolygonMesh> settings = LOC::internal::tile_settings<PolygonMesh>(np);
+  LOC::Tiled_surface_report report;
+  report.share = settings.share;
+  LOC::internal::Stopwatch total, watch;
+
+  // pass 1: the box, and the points checked as lex_optimal_tiled_surface_reconstruction() does
+  Bbox_3 box;
+  std::size_t count = 0;
+  for_each_point([&](const Point& p) {
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw LOC::Input_error(LOC::Input_error_code::NON_FINITE_COORDINATE,
+                             "point " + std::to_string(count) + " has a NaN or infinite coordinate");
+    box += p.bbox();
+    ++count;
+  });
+  if(count == 0) throw LOC::Input_error(LOC::Input_error_code::EMPTY_INPUT, "no input point");
+  // the tile size and a given spacing checked before the buckets are written
+  LOC::internal::set_tile_grid(box, count, tile_size, settings.seam_spacing, report);
+  const LOC::internal::Tile_grid grid(box, tile_size);
+
+  // pass 2: the buckets; then each one sorted, without duplicates (which share a cell)
+  LOC::internal::Tile_buckets<Point> buckets(bucket_directory, grid.number_of_tiles());
+  for_each_point([&](const Point& p) {
+    const Point q(p.x() + 0.0, p.y() + 0.0, p.z() + 0.0); // -0 + 0 = +0, as for the points in memory
+    buckets.add(grid.cell_of(q.x(), q.y()), q);
+  });
+  buckets.flush();
+  std::vector<std::size_t> cost(grid.number_of_tiles());
+  std::size_t distinct = 0;
+  for(std::size_t cell = 0; cell < cost.size(); ++cell) {
+    std::vector<Point> points = buckets.read(cell);
+    std::sort(points.begin(), points.end());
+    const auto end = std::unique(points.begin(), points.end());
+    points.erase(end, points.end());
+    buckets.replace(cell, points);
+    cost[cell] = points.size();
+    distinct += points.size();
+  }
+  if(distinct < 4) throw LOC::Input_error(LOC::Input_error_code::TOO_FEW_POINTS, "fewer than 4 distinct points");
+  LOC::internal::set_tile_grid(box, distinct, tile_size, settings.seam_spacing, report);
+
+  // the seams, from the points near the inner border lines
+  std::vector<Point> band;
+  for(std::size_t cell = 0; cell < cost.size(); ++cell)
+    for(const Point& p : buckets.read(cell))
+      if(LOC::internal::Tile_seams_3<Point>::in_band(grid, p, report.seam_spacing)) band.push_back(p);
+  std::sort(band.begin(), band.end());
+  const LOC::internal::Tile_seams_3<Point> seams(box, band, tile_size, report.seam_spacing);
+  report.columns = seams.columns();
+  report.rows = seams.rows();
+  report.number_of_seam_points = seams.seam_points().size();
+  // the points near a seam that fall in another tile than their cell's, per tile (sorted)
+  std::vector<std::vector<Point>> moved(seams.number_of_tiles());
+  for(const Point& p : band) {
+    const std::size_t t = seams.tile_of(p);
+    if(t != grid.cell_of(p.x(), p.y()) && !seams.is_seam_point(p)) moved[t].push_back(p);
+  }
+  std::vector<Point>().swap(band);
+  const std::vector<std::vector<Point>> cycles = LOC::internal::tile_cycles(seams);
+  report.seam_seconds = watch.lap();
+
+  // the points of a tile: those of its bucket that stay in it, and those that move into it, in
+  // order, then its cycle's seam points (as in lex_optimal_tiled_surface_reconstruction())
+  auto points_of = [&](std::size_t t) {
+    std::vector<Point> own = buckets.read(t);
+    own.erase(std::remove_if(own.begin(), own.end(),
+                             [&](const Point& p) { return seams.is_seam_point(p) || seams.tile_of(p) != t; }),
+              own.end());
+    std::vector<Point> points;
+    points.reserve(own.size() + moved[t].size());
+    std::merge(own.begin(), own.end(), moved[t].begin(), moved[t].end(), std::back_inserter(points));
+    std::vector<Point>().swap(moved[t]);
+    LOC::internal::append_cycle_seam_points(seams, cycles[t], points);
+    return points;
+  };
+  std::vector<PolygonMesh> meshes;
+  LOC::internal::reconstruct_tiles(seams, cycles, cost, points_of, settings, meshes, report);
+  report.tiles_seconds = watch.lap();
   tile_meshes = std::move(meshes);
   report.total_seconds = total.lap();
   return report;

@@ -37,7 +37,8 @@ enum class Input_error_code
   EMPTY_RESULT,                ///< every triangle of the result was dropped (`drop_boundary_triangles`): the points do not span the boundary
   UNREADABLE_FILE,             ///< an input file cannot be opened or read, is malformed, or holds more than its header declares
   UNSUPPORTED_OPTION,          ///< an option needs a library the program was built without (`robust` needs Eigen)
-  INVALID_PARAMETER            ///< a named parameter is out of its range (`smoothing_neighbors` from 1 to 7)
+  INVALID_PARAMETER,           ///< a named parameter is out of its range (`smoothing_neighbors` from 1 to 7)
+  WRITE_FAILED                 ///< a working file cannot be written (the bucket files of the out-of-core tiles: no space, no permission)
 };
 
 /*!

@@ -46,18 +46,14 @@ namespace CGAL {
 namespace Lex_optimal_chains {
 namespace internal {
 
-template <class Point>
-class Tile_seams_3
+// The grid of the tiles over the bounding rectangle of the points: columns x rows cells of
+// equal size, at most `tile_size` on a side, and what lies near its inner border lines.
+class Tile_grid
 {
-  using Kernel = typename Kernel_traits<Point>::Kernel;
-  using Point_2 = typename Kernel::Point_2;
-
 public:
-  // `points`: finite, sorted, distinct, not all on one vertical line; `tile_size` and
-  // `seam_spacing` positive and finite (the caller checks them).
-  Tile_seams_3(const std::vector<Point>& points, double tile_size, double seam_spacing) : spacing_(seam_spacing)
+  // `tile_size` positive and finite (the caller checks it)
+  Tile_grid(const Bbox_3& box, double tile_size)
   {
-    const Bbox_3 box = bbox_3(points.begin(), points.end());
     low_ = {box.xmin(), box.ymin()};
     high_ = {box.xmax(), box.ymax()};
     for(int axis = 0; axis < 2; ++axis) {
@@ -65,11 +61,6 @@ public:
       count_[axis] = std::max<std::size_t>(1, std::size_t(std::ceil(extent / tile_size)));
       step_[axis] = extent / double(count_[axis]);
     }
-    const double side = std::max(high_[0] - low_[0], high_[1] - low_[1]);
-    margin_ = std::max(seam_spacing, 0.01 * side);
-    drop_ = 1e-3 * side;
-    frame_z_ = box.zmin() - drop_; // below the points: a flat cloud is not coplanar with the frame
-    build_polylines(points);
   }
 
   std::size_t columns() const { return count_[0]; }
@@ -80,6 +71,62 @@ public:
   double border(int axis, std::size_t i) const
   {
     return i == count_[axis] ? high_[axis] : low_[axis] + double(i) * step_[axis];
+  }
+
+  // the index along `axis` (column or row) of the cell that holds coordinate c
+  std::size_t cell_along(int axis, double c) const
+  {
+    const double f = std::floor((c - low_[axis]) / step_[axis]);
+    return f < 0 ? 0 : std::min(count_[axis] - 1, std::size_t(f));
+  }
+
+  // the cell (column + columns * row) that holds (x, y), by its coordinates
+  std::size_t cell_of(double x, double y) const { return cell_along(0, x) + count_[0] * cell_along(1, y); }
+
+  // The inner border line of `axis` (1 to count - 1) within `half_width` of coordinate c, or 0.
+  std::size_t inner_border_near(int axis, double c, double half_width) const
+  {
+    if(count_[axis] < 2) return 0;
+    const double i = std::round((c - low_[axis]) / step_[axis]);
+    if(i < 1 || i > double(count_[axis] - 1)) return 0;
+    return std::abs(c - border(axis, std::size_t(i))) <= half_width ? std::size_t(i) : 0;
+  }
+
+protected:
+  std::array<double, 2> low_{}, high_{}, step_{};
+  std::array<std::size_t, 2> count_{};
+};
+
+template <class Point>
+class Tile_seams_3 : public Tile_grid
+{
+  using Kernel = typename Kernel_traits<Point>::Kernel;
+  using Point_2 = typename Kernel::Point_2;
+
+public:
+  // `points`: finite, sorted, distinct, not all on one vertical line; `tile_size` and
+  // `seam_spacing` positive and finite (the caller checks them).
+  Tile_seams_3(const std::vector<Point>& points, double tile_size, double seam_spacing)
+    : Tile_seams_3(bbox_3(points.begin(), points.end()), points, tile_size, seam_spacing)
+  {}
+
+  // The same seams from the bounding box `box` of the points and from those of them that lie
+  // within half the spacing of an inner border line (`in_band()`; others may be given too):
+  // the seams are made of these only.
+  Tile_seams_3(const Bbox_3& box, const std::vector<Point>& band_points, double tile_size, double seam_spacing)
+    : Tile_grid(box, tile_size), spacing_(seam_spacing)
+  {
+    const double side = std::max(high_[0] - low_[0], high_[1] - low_[1]);
+    margin_ = std::max(seam_spacing, 0.01 * side);
+    drop_ = 1e-3 * side;
+    frame_z_ = box.zmin() - drop_; // below the points: a flat cloud is not coplanar with the frame
+    build_polylines(band_points);
+  }
+
+  // whether p is near an inner border line of `grid`, where the seams of spacing `spacing` take their points
+  static bool in_band(const Tile_grid& grid, const Point& p, double spacing)
+  {
+    return grid.inner_border_near(0, p.x(), 0.5 * spacing) != 0 || grid.inner_border_near(1, p.y(), 0.5 * spacing) != 0;
   }
 
   // the input points that lie on a seam (on the cycles of two tiles or more), sorted
@@ -197,13 +244,9 @@ private:
     std::array<std::vector<std::vector<const Point*>>, 2> band;
     for(int axis = 0; axis < 2; ++axis) band[axis].resize(count_[axis] > 1 ? count_[axis] - 1 : 0);
     for(const Point& p : points)
-      for(int axis = 0; axis < 2; ++axis) {
-        if(count_[axis] < 2) continue;
-        const double c = coordinate(p, axis);
-        const double i = std::round((c - low_[axis]) / step_[axis]);
-        if(i < 1 || i > double(count_[axis] - 1)) continue;
-        if(std::abs(c - border(axis, std::size_t(i))) <= 0.5 * spacing_) band[axis][std::size_t(i) - 1].push_back(&p);
-      }
+      for(int axis = 0; axis < 2; ++axis)
+        if(const std::size_t i = inner_border_near(axis, coordinate(p, axis), 0.5 * spacing_))
+          band[axis][i - 1].push_back(&p);
     // sorted along their line (then as points: deterministic)
     for(int axis = 0; axis < 2; ++axis)
       for(auto& b : band[axis])
@@ -299,8 +342,7 @@ private:
     const std::size_t n = count_[axis];
     if(n == 1) return 0;
     const double c = coordinate(p, axis);
-    double f = std::floor((c - low_[axis]) / step_[axis]);
-    std::size_t index = f < 0 ? 0 : std::min(n - 1, std::size_t(f));
+    const std::size_t index = cell_along(axis, c);
     // the inner border lines whose band may hold p: index and index + 1
     for(std::size_t i : {index, index + 1}) {
       if(i < 1 || i >= n || std::abs(c - border(axis, i)) > 0.5 * spacing_) continue;
@@ -328,8 +370,6 @@ private:
   }
 
   double spacing_ = 0, margin_ = 0, drop_ = 0, frame_z_ = 0;
-  std::array<double, 2> low_{}, high_{}, step_{};
-  std::array<std::size_t, 2> count_{};
   std::array<std::vector<Polyline>, 2> polylines_;
   std::vector<Point> seam_points_;
 };
