@@ -8,8 +8,8 @@
 //                   [--drop-boundary-triangles | --keep-boundary-triangles] [--keep-non-manifold]
 //                   [--threads N] [--ascii] [--json]
 //   lex_reconstruct tiles INPUT OUTPUT_DIR --tile-size S [--seam-spacing V] [--merged FILE]
-//                   [--classes C,...] [--coefficients z2|q] [--keep-non-manifold] [--threads N]
-//                   [--ascii] [--json]
+//                   [--classes C,...] [--out-of-core [--bucket-dir DIR]] [--coefficients z2|q]
+//                   [--keep-non-manifold] [--threads N] [--ascii] [--json]
 //   mpirun -np K lex_reconstruct_mpi tiles ...   (the same, the tiles dealt out to K ranks)
 //
 // INPUT: points as XYZ, PLY, OFF or uncompressed LAS (1.0 to 1.4; --classes keeps the points of
@@ -22,7 +22,8 @@
 // (lex_reconstruct_mpi, built when CMake finds MPI) every rank reads the input and computes
 // the seams; the tiles are dealt out to the ranks (balanced by their points), each rank
 // writes its own; the first rank then makes the union from the tile files. The files are
-// byte for byte those of one process.
+// byte for byte those of one process. --out-of-core reads the input twice and buckets it
+// into files, one per tile, so that the cloud is never in memory: the same tiles.
 // On error: a one-line reason on stderr, exit code 1, and no output file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -384,6 +385,8 @@ struct Tiles_options
   double tile_size = 0, seam_spacing = 0;
   std::string merged, coefficients = "q";
   std::vector<int> classes; // of a LAS input (empty: all)
+  bool out_of_core = false;
+  std::string bucket_directory; // out of core: where the bucket files go (empty: next to the tiles)
 };
 
 // An error already reported by another rank: this rank exits with code 1 and says nothing.
@@ -440,7 +443,10 @@ public:
       throw std::runtime_error("cannot create the tile directory '" + directory + "': no directory " + parent.string());
     // writable? (Output_file throws if not; one probe per rank)
     Output_file probe((parent / (".lex_reconstruct_probe_" + std::to_string(group.rank()) + ".ply")).string());
+    parent_ = parent.string();
   }
+  // the directory that holds the tile directory (or the tile directory itself, if it exists)
+  const std::string& parent() const { return parent_; }
   std::string tile_path(std::size_t column, std::size_t row) const
   {
     return (std::filesystem::path(directory_) / ("tile_" + std::to_string(column) + "_" + std::to_string(row) + ".ply")).string();
@@ -468,7 +474,7 @@ public:
     if(!existed_) std::filesystem::remove(directory_, error); // only if empty
   }
 private:
-  std::string directory_;
+  std::string directory_, parent_;
   bool existed_ = false;
   std::vector<std::string> written_;
 };
@@ -493,13 +499,14 @@ static LOC::Tile_merge_report merge_tile_files(const Tile_directory& directory, 
 // made it (the others have zeros), the times and the peak memory are the largest over the ranks.
 static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_report& r)
 {
-  constexpr std::size_t fields = 6;
+  constexpr std::size_t fields = 7;
   std::vector<double> values(fields * r.tiles.size(), 0);
   for(std::size_t t = 0; t < r.tiles.size(); ++t) {
     const LOC::Tile_report& tile = r.tiles[t];
     if(!tile.reconstructed) continue;
-    const double v[fields] = {1, double(tile.number_of_removed_points), double(tile.mesh_vertices),
-                              double(tile.mesh_faces), tile.seconds, double(tile.peak_memory_bytes)};
+    const double v[fields] = {1, double(tile.number_of_points), double(tile.number_of_removed_points),
+                              double(tile.mesh_vertices), double(tile.mesh_faces), tile.seconds,
+                              double(tile.peak_memory_bytes)};
     std::copy(v, v + fields, values.begin() + std::ptrdiff_t(fields * t));
   }
   values = group.sum(values);
@@ -507,11 +514,12 @@ static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_r
     LOC::Tile_report& tile = r.tiles[t];
     const double* v = values.data() + fields * t;
     tile.reconstructed = v[0] > 0;
-    tile.number_of_removed_points = std::size_t(v[1]);
-    tile.mesh_vertices = std::size_t(v[2]);
-    tile.mesh_faces = std::size_t(v[3]);
-    tile.seconds = v[4];
-    tile.peak_memory_bytes = std::size_t(v[5]);
+    tile.number_of_points = std::size_t(v[1]);
+    tile.number_of_removed_points = std::size_t(v[2]);
+    tile.mesh_vertices = std::size_t(v[3]);
+    tile.mesh_faces = std::size_t(v[4]);
+    tile.seconds = v[5];
+    tile.peak_memory_bytes = std::size_t(v[6]);
   }
   r.seam_seconds = group.max(r.seam_seconds);
   r.tiles_seconds = group.max(r.tiles_seconds);
@@ -519,7 +527,7 @@ static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_r
 }
 
 static nlohmann::json tiles_json(const std::string& input, const std::string& directory, const Process_group& group,
-                                 const LOC::Tiled_surface_report& r, bool memory_measured)
+                                 const LOC::Tiled_surface_report& r, bool memory_measured, bool out_of_core)
 {
   nlohmann::json j;
   j["input"] = input;
@@ -537,6 +545,7 @@ static nlohmann::json tiles_json(const std::string& input, const std::string& di
   j["seam_s"] = r.seam_seconds;
   j["tiles_s"] = r.tiles_seconds;
   j["tile_memory_measured"] = memory_measured;
+  j["out_of_core"] = out_of_core;
   nlohmann::json per_tile = nlohmann::json::array();
   for(const LOC::Tile_report& tile : r.tiles)
     per_tile.push_back({{"column", tile.column}, {"row", tile.row}, {"rank", tile.share}, {"points", tile.number_of_points},
@@ -578,17 +587,22 @@ static int run_tiles(const std::string& input, const std::string& directory, con
   const bool measure_memory = options.json && options.threads == 1;
   LOC::Tiled_surface_report r;
   try {
-    const std::vector<Point> points = LOC::IO::read_point_file<Point>(input, t.classes);
+    const auto np = LOC::parameters::seam_spacing(t.seam_spacing,
+                    LOC::parameters::coefficient_field(field,
+                    LOC::parameters::keep_non_manifold(options.keep_non_manifold,
+                    LOC::parameters::number_of_threads(options.threads,
+                    LOC::parameters::tile_share(LOC::Tile_share{group.rank(), group.size()},
+                    LOC::parameters::measure_tile_memory(measure_memory,
+                    LOC::parameters::tile_visitor(write_tile)))))));
     std::vector<Mesh> tiles;
-    r = CGAL::lex_optimal_tiled_surface_reconstruction(
-      points, t.tile_size, tiles,
-      LOC::parameters::seam_spacing(t.seam_spacing,
-      LOC::parameters::coefficient_field(field,
-      LOC::parameters::keep_non_manifold(options.keep_non_manifold,
-      LOC::parameters::number_of_threads(options.threads,
-      LOC::parameters::tile_share(LOC::Tile_share{group.rank(), group.size()},
-      LOC::parameters::measure_tile_memory(measure_memory,
-      LOC::parameters::tile_visitor(write_tile))))))));
+    if(t.out_of_core) { // the file read twice, the points bucketed into files
+      const std::string buckets = t.bucket_directory.empty() ? tile_directory->parent() : t.bucket_directory;
+      auto each_point = [&](const auto& f) { LOC::IO::for_each_point_in_file<Point>(input, t.classes, f); };
+      r = CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(each_point, t.tile_size, buckets, tiles, np);
+    } else {
+      const std::vector<Point> points = LOC::IO::read_point_file<Point>(input, t.classes);
+      r = CGAL::lex_optimal_tiled_surface_reconstruction(points, t.tile_size, tiles, np);
+    }
   } catch(...) {
     error = std::current_exception();
   }
@@ -622,7 +636,7 @@ static int run_tiles(const std::string& input, const std::string& directory, con
   settle_errors(group, error, undo);
   if(!group.is_root()) return 0;
   if(options.json) {
-    nlohmann::json j = tiles_json(input, directory, group, r, measure_memory);
+    nlohmann::json j = tiles_json(input, directory, group, r, measure_memory, t.out_of_core);
     j["merge_s"] = merge_watch.time();
     j["write_s"] = write_s + merged_io.time(); // the tiles' within tiles_s
     j["total_s"] = r.total_seconds + merge_watch.time() + merged_io.time();
@@ -707,6 +721,13 @@ int main(int argc, char** argv)
   tiles->add_option("--classes", tiles_options.classes, "with a LAS input: the classifications kept, e.g. 2,6 (ground, building)")
     ->delimiter(',')
     ->check(CLI::Range(0, 255));
+  auto* out_of_core = tiles->add_flag("--out-of-core", tiles_options.out_of_core,
+                                      "stream the input twice and bucket it into files per tile, so that the memory holds "
+                                      "the tiles being made and not the cloud (same tiles)");
+  tiles->add_option("--bucket-dir", tiles_options.bucket_directory,
+                    "with --out-of-core: an existing directory for the bucket files (24 bytes a point; "
+                    "default: the parent of OUTPUT_DIR)")
+    ->needs(out_of_core);
   add_output_options(tiles, options);
   try {
     app.parse(argc, argv);

@@ -292,6 +292,35 @@ if(NOT one STREQUAL two)
   message(FATAL_ERROR "b9 tiles: the union differs between 1 and 2 threads")
 endif()
 message(STATUS "b9 tiles: ${json}")
+# out of core (the input streamed twice into bucket files): the same tiles and union, byte for
+# byte, and no bucket file left
+execute_process(COMMAND "${PROGRAM}" tiles "${b9}" "${WORK}/b9_tiles_ooc" --tile-size 60 --out-of-core
+                        --bucket-dir "${WORK}" --merged "${WORK}/b9_merged_ooc.off" --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "b9 tiles out of core: exit code ${rc}: ${err}")
+endif()
+string(JSON out_of_core GET "${json}" out_of_core)
+if(NOT out_of_core)
+  message(FATAL_ERROR "b9 tiles out of core: the JSON does not say so: ${json}")
+endif()
+foreach(tile 0_0 1_0 0_1 1_1)
+  file(SHA256 "${WORK}/b9_tiles_1/tile_${tile}.ply" one)
+  file(SHA256 "${WORK}/b9_tiles_ooc/tile_${tile}.ply" two)
+  if(NOT one STREQUAL two)
+    message(FATAL_ERROR "b9 tiles out of core: tile ${tile} differs from the tile made in memory")
+  endif()
+endforeach()
+file(SHA256 "${WORK}/b9_merged_1.off" one)
+file(SHA256 "${WORK}/b9_merged_ooc.off" two)
+file(GLOB buckets "${WORK}/.lex_tile_buckets*")
+if(NOT one STREQUAL two OR buckets)
+  message(FATAL_ERROR "b9 tiles out of core: the union differs, or bucket files are left: ${buckets}")
+endif()
+message(STATUS "b9 tiles out of core: the same tiles and union, byte for byte")
+expect_tiles_failure(tiles_no_buckets "bucket directory" "${b9}" "${WORK}/tiles_no_buckets_dir" --tile-size 60
+                     --out-of-core --bucket-dir "${WORK}/missing_buckets" --merged "${WORK}/tiles_no_buckets_merged.off")
+expect_tiles_failure(tiles_buckets_alone "out-of-core" "${b9}" "${WORK}/tiles_buckets_alone_dir" --tile-size 60 --bucket-dir "${WORK}")
 
 # ----- lex_optimal_triangulation_2: bad input gives one line and exit code 1 -----
 if(TRIANGULATION_PROGRAM)

@@ -18,6 +18,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -29,7 +30,74 @@
 
 namespace CGAL {
 namespace Lex_optimal_chains {
+namespace internal {
+
+// An output iterator that calls a function with each point put through it, with the point type
+// as its value type (CGAL 5.5's PLY reader needs it; boost's function_output_iterator has none).
+template <class Point_3, class Function>
+struct Calling_output_iterator
+{
+  using iterator_category = std::output_iterator_tag;
+  using value_type = Point_3;
+  using difference_type = std::ptrdiff_t;
+  using pointer = void;
+  using reference = void;
+  const Function* function;
+  Calling_output_iterator& operator*() { return *this; }
+  Calling_output_iterator& operator++() { return *this; }
+  Calling_output_iterator operator++(int) { return *this; }
+  Calling_output_iterator& operator=(const Point_3& p)
+  {
+    (*function)(p);
+    return *this;
+  }
+};
+
+} // namespace internal
+
 namespace IO {
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Calls `f(p)` with each point `p` of a point file as it is read, the points not kept (for
+clouds larger than memory): the file is read as `read_point_file()` reads it, the LAS files
+by `for_each_las_point()`, the others by CGAL's readers, which stream. The checks of
+`read_point_file()` that need the whole file come after the last point (a PLY or OFF file
+that holds more points than its header declares throws then).
+
+\tparam Point_3 the point type, as for `CGAL::IO::read_points()`
+\tparam Function a callable `void(const Point_3&)`
+\throws Input_error as `read_point_file()`
+*/
+template <class Point_3, class Function>
+void for_each_point_in_file(const std::string& path, const std::vector<int>& classes, const Function& f)
+{
+  std::string extension = std::filesystem::path(path).extension().string();
+  for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if(extension == ".laz")
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "'" + path + "': compressed LAS (LAZ) is not supported: "
+                                                         "decompress it first (laszip, or pdal translate in.laz out.las)");
+  if(extension == ".las") return for_each_las_point<Point_3>(path, classes, f);
+  if(extension != ".xyz" && extension != ".ply" && extension != ".off")
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "input '" + path + "' must end in .xyz, .ply, .off or .las");
+  if(!classes.empty())
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "classes are read from LAS files only, not from '" + path + "'");
+  if(!std::filesystem::is_regular_file(path))
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot open input '" + path + "'");
+  std::ostringstream reader_messages;
+  std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
+  bool read = false;
+  try {
+    read = CGAL::IO::read_points<Point_3>(path, internal::Calling_output_iterator<Point_3, Function>{&f});
+  } catch(...) { // from f
+    std::cerr.rdbuf(saved);
+    throw;
+  }
+  std::cerr.rdbuf(saved);
+  if(!read) throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot read points from '" + path + "'");
+  internal::check_declared_counts(path, extension);
+}
 
 /*!
 \ingroup PkgLexOptimalChainsRef
@@ -53,25 +121,8 @@ opened or read, more data than its header declares, a compressed LAS file (`.laz
 template <class Point_3>
 std::vector<Point_3> read_point_file(const std::string& path, const std::vector<int>& classes = {})
 {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for(char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if(extension == ".laz")
-    throw Input_error(Input_error_code::UNREADABLE_FILE, "'" + path + "': compressed LAS (LAZ) is not supported: "
-                                                         "decompress it first (laszip, or pdal translate in.laz out.las)");
-  if(extension == ".las") return read_las_points<Point_3>(path, classes);
-  if(extension != ".xyz" && extension != ".ply" && extension != ".off")
-    throw Input_error(Input_error_code::UNREADABLE_FILE, "input '" + path + "' must end in .xyz, .ply, .off or .las");
-  if(!classes.empty())
-    throw Input_error(Input_error_code::UNREADABLE_FILE, "classes are read from LAS files only, not from '" + path + "'");
-  if(!std::filesystem::is_regular_file(path))
-    throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot open input '" + path + "'");
   std::vector<Point_3> points;
-  std::ostringstream reader_messages;
-  std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
-  const bool read = CGAL::IO::read_points(path, std::back_inserter(points));
-  std::cerr.rdbuf(saved);
-  if(!read) throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot read points from '" + path + "'");
-  internal::check_declared_counts(path, extension);
+  for_each_point_in_file<Point_3>(path, classes, [&](const Point_3& p) { points.push_back(p); });
   return points;
 }
 
