@@ -27,10 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <exception>
-#include <functional>
-#include <mutex>
-#include <stdexcept>
+#include <iterator>
 #include <string>
 #include <unordered_map>
 #include <vector>

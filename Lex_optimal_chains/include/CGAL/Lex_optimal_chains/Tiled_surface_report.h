@@ -35,7 +35,7 @@ struct Tile_report
 {
   std::size_t column = 0;           ///< column of the tile (along x, from 0)
   std::size_t row = 0;              ///< row of the tile (along y, from 0)
-  std::size_t number_of_points = 0; ///< input points of the tile, its seam points included
+  std::size_t number_of_points = 0; ///< input points of the tile, its seam points included (0 if this call did not reconstruct it)
   std::size_t number_of_cycle_vertices = 0; ///< vertices of its boundary cycle (seam points and frame vertices)
   std::size_t number_of_removed_points = 0; ///< points removed so that the cycle is in its triangulation
   std::size_t mesh_vertices = 0;    ///< vertices of its mesh
