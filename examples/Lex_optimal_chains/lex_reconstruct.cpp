@@ -612,8 +612,6 @@ static int run_tiles(const std::string& input, const std::string& directory, con
     if(group.is_root()) tile_directory->remove_if_created();
   };
   settle_errors(group, error, undo);
-  // the peak of the rank, before and during the tiles (measuring the tiles resets getrusage's)
-  const double peak_mb = group.max(std::max(peak_rss_mb(), double(r.peak_memory_bytes) / (1024.0 * 1024.0)));
   gather_tile_reports(group, r);
   const double write_s = group.max(io.time());
 
@@ -634,6 +632,9 @@ static int run_tiles(const std::string& input, const std::string& directory, con
     }
   }
   settle_errors(group, error, undo);
+  // the peak of the largest rank, union included (measuring the tiles resets getrusage's peak:
+  // the library's report has the peak before and during the tiles)
+  const double peak_mb = group.max(std::max(peak_rss_mb(), double(r.peak_memory_bytes) / (1024.0 * 1024.0)));
   if(!group.is_root()) return 0;
   if(options.json) {
     nlohmann::json j = tiles_json(input, directory, group, r, measure_memory, t.out_of_core);
@@ -726,7 +727,7 @@ int main(int argc, char** argv)
                                       "the tiles being made and not the cloud (same tiles)");
   tiles->add_option("--bucket-dir", tiles_options.bucket_directory,
                     "with --out-of-core: an existing directory for the bucket files (24 bytes a point; "
-                    "default: the parent of OUTPUT_DIR)")
+                    "default: OUTPUT_DIR if it exists, else its parent)")
     ->needs(out_of_core);
   add_output_options(tiles, options);
   try {

@@ -24,11 +24,10 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
@@ -144,7 +143,7 @@ void check_out_of_core(const std::vector<Point>& points, double tile_size, const
                        const LOC::Tiled_surface_report& r, int copies)
 {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("test_tiled_surface_buckets_" + std::to_string(::getpid()));
+  const fs::path dir = fs::temp_directory_path() / ("test_tiled_surface_buckets_" + std::to_string(std::random_device()()));
   fs::create_directories(dir);
   std::size_t passes = 0;
   auto source = [&](const auto& f) {
@@ -338,7 +337,7 @@ void test_bad_input()
 
   // out of core: the same errors, and a bucket directory that does not exist; no file left
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("test_tiled_surface_bad_" + std::to_string(::getpid()));
+  const fs::path dir = fs::temp_directory_path() / ("test_tiled_surface_bad_" + std::to_string(std::random_device()()));
   fs::create_directories(dir);
   auto from = [](const std::vector<Point>& v) { return [&v](const auto& f) { for(const Point& p : v) f(p); }; };
   const std::string d = dir.string();
@@ -353,11 +352,22 @@ void test_bad_input()
   const std::vector<Point> three(points.begin(), points.begin() + 3);
   std::vector<Point> repeated;
   for(int k = 0; k < 50; ++k) repeated.insert(repeated.end(), three.begin(), three.end());
-  const CGAL::Bbox_3 box3 = CGAL::bbox_3(three.begin(), three.end());
-  const double half = 0.6 * std::max(box3.xmax() - box3.xmin(), box3.ymax() - box3.ymin()); // 2 x 2 tiles at most
-  expect_error(Code::TOO_FEW_POINTS, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(repeated), half, d, tiles); });
-  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 0.01, d, tiles); });
-  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(points, 0.01, tiles); });
+  for(double size : {0.01, 5.}) { // what the tile size would be does not matter: as in memory
+    expect_error(Code::TOO_FEW_POINTS, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(repeated), size, d, tiles); });
+    expect_error(Code::TOO_FEW_POINTS, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(repeated, size, tiles); });
+  }
+  // sources that give one point less, or one point elsewhere, in their second call
+  for(int change = 0; change < 2; ++change) {
+    int call = 0;
+    auto changing = [&](const auto& f) {
+      const bool second = ++call == 2;
+      for(std::size_t i = 0; i < points.size(); ++i) {
+        if(second && change == 0 && i == 0) continue;
+        f(second && change == 1 && i == 0 ? Point(100, 100, 0) : points[i]);
+      }
+    };
+    expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(changing, 5., d, tiles); });
+  }
   expect_error(Code::INVALID_PARAMETER, [&] {
     CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 5., (dir / "missing").string(), tiles);
   });

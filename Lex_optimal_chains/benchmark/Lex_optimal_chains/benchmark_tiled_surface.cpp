@@ -142,7 +142,10 @@ static int rank_table(const std::string& self, const std::vector<std::size_t>& s
             << "   points  tiles  ranks  tiles_s  seam_s  total_s  tiles_s/1rank  peak_GB/rank  largest_tile_peak_GB\n";
   for(std::size_t n : sizes) {
     const std::string file = (work / ("terrain_" + std::to_string(n) + ".ply")).string();
-    if(std::system((self + " --one write " + std::to_string(n) + " " + file).c_str()) != 0) return 1;
+    if(std::system((self + " --one write " + std::to_string(n) + " " + file).c_str()) != 0) {
+      fs::remove_all(work);
+      return 1;
+    }
     double one_rank = 0;
     for(int ranks : {1, 2}) {
       const std::string out = (work / ("tiles_" + std::to_string(ranks))).string();
@@ -156,6 +159,7 @@ static int rank_table(const std::string& self, const std::vector<std::size_t>& s
         while(p && fgets(buffer, sizeof buffer, p)) output += buffer;
         if(!p || pclose(p) != 0) {
           std::cerr << "failed: " << command << "\n" << output;
+          fs::remove_all(work);
           return 1;
         }
       }
@@ -222,7 +226,10 @@ int main(int argc, char** argv)
   const std::string terrain_file = (work / "terrain.ply").string();
   for(std::size_t n : sizes) {
     std::vector<std::map<std::string, double>> ds, us, t1s, t2s, sts, os, rs;
-    if(std::system((self + " --one write " + std::to_string(n) + " " + terrain_file).c_str()) != 0) return 1;
+    if(std::system((self + " --one write " + std::to_string(n) + " " + terrain_file).c_str()) != 0) {
+      fs::remove_all(work);
+      return 1;
+    }
     for(std::size_t k = 0; k < repeat; ++k) {
       const bool all = n <= 5000000;
       std::map<std::string, double> none;

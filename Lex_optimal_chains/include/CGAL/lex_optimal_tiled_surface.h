@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <iterator>
 #include <string>
 #include <unordered_map>
@@ -137,7 +138,8 @@ points.
 
 \throws Lex_optimal_chains::Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`,
 `TOO_FEW_POINTS`, `INVALID_PARAMETER` (a tile size that is not positive or gives one tile, a
-seam spacing out of its range, a share with no tiles (`count` 0, or `index` not below it), a tile corner with no input point near it: the seams run
+seam spacing out of its range, a grid of more than one tile per 4 points, a share with no
+tiles (`count` 0, or `index` not below it), a tile corner with no input point near it: the seams run
 through the points), or the error of the first tile (in the order of the tiles) that cannot
 be reconstructed, its tile named in the message (an exception of the visitor becomes a
 `std::runtime_error` naming the tile). `tile_meshes` is then unchanged.
@@ -232,8 +234,9 @@ The passes:
 \return what was done, tile by tile
 
 \throws Lex_optimal_chains::Input_error as `lex_optimal_tiled_surface_reconstruction()` does, and
-with code `INVALID_PARAMETER` for a bucket directory that does not exist, `WRITE_FAILED` for
-bucket files that cannot be written or read back. `tile_meshes` is then unchanged.
+with code `INVALID_PARAMETER` for a bucket directory that does not exist (checked first) or a
+source that gives other points in its second call, `WRITE_FAILED` for bucket files that
+cannot be written or read back. `tile_meshes` is then unchanged.
 */
 template <class PointSource, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Tiled_surface_report
@@ -249,27 +252,47 @@ lex_optimal_tiled_surface_reconstruction_out_of_core(const PointSource& for_each
   report.share = settings.share;
   LOC::internal::Stopwatch total, watch;
 
+  std::error_code directory_error;
+  if(!std::filesystem::is_directory(bucket_directory, directory_error))
+    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                           "the bucket directory '" + bucket_directory + "' is not a directory");
+
   // pass 1: the box, and the points checked as lex_optimal_tiled_surface_reconstruction() does
+  // (fewer than 4 distinct points are known by the first 4 distinct ones)
   Bbox_3 box;
   std::size_t count = 0;
+  std::vector<Point> first_distinct;
   for_each_point([&](const Point& p) {
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
       throw LOC::Input_error(LOC::Input_error_code::NON_FINITE_COORDINATE,
                              "point " + std::to_string(count) + " has a NaN or infinite coordinate");
     box += p.bbox();
     ++count;
+    if(first_distinct.size() < 4 && std::find(first_distinct.begin(), first_distinct.end(), p) == first_distinct.end())
+      first_distinct.push_back(p);
   });
   if(count == 0) throw LOC::Input_error(LOC::Input_error_code::EMPTY_INPUT, "no input point");
+  if(first_distinct.size() < 4) throw LOC::Input_error(LOC::Input_error_code::TOO_FEW_POINTS, "fewer than 4 distinct points");
   // the tile size and a given spacing checked before the buckets are written
   LOC::internal::set_tile_grid(box, count, tile_size, settings.seam_spacing, report);
   const LOC::internal::Tile_grid grid(box, tile_size);
 
-  // pass 2: the buckets; then each one sorted, without duplicates (which share a cell)
+  // pass 2: the buckets (the source must give the points of pass 1 again); then each one
+  // sorted, without duplicates (which share a cell)
   LOC::internal::Tile_buckets<Point> buckets(bucket_directory, grid.number_of_tiles());
+  std::size_t second_count = 0;
   for_each_point([&](const Point& p) {
+    if(!(p.x() >= box.xmin() && p.x() <= box.xmax() && p.y() >= box.ymin() && p.y() <= box.ymax() &&
+         p.z() >= box.zmin() && p.z() <= box.zmax()) || ++second_count > count)
+      throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                             "the point source gave other points in its second pass than in its first");
     const Point q(p.x() + 0.0, p.y() + 0.0, p.z() + 0.0); // -0 + 0 = +0, as for the points in memory
     buckets.add(grid.cell_of(q.x(), q.y()), q);
   });
+  if(second_count != count)
+    throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                           "the point source gave " + std::to_string(second_count) + " points in its second pass, " +
+                             std::to_string(count) + " in its first");
   buckets.flush();
   std::vector<std::size_t> cost(grid.number_of_tiles());
   std::size_t distinct = 0;

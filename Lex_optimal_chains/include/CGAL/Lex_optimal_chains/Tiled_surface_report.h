@@ -65,7 +65,7 @@ struct Tiled_surface_report
   double seam_seconds = 0;                ///< time to compute the seams and sort the points into tiles
   double tiles_seconds = 0;               ///< time to reconstruct the tiles
   double total_seconds = 0;               ///< time of the whole call
-  std::size_t peak_memory_bytes = 0;      ///< with `measure_tile_memory`: the peak resident size of the process over the call (0: not measured)
+  std::size_t peak_memory_bytes = 0;      ///< with `measure_tile_memory`: the peak resident size of the process over the call, the visitor's work included (0: not measured)
 };
 
 /*!

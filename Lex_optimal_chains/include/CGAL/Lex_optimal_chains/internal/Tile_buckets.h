@@ -44,7 +44,7 @@ public:
     if(directory_.empty())
       throw Input_error(Input_error_code::WRITE_FAILED, "cannot make a directory for the bucket files in '" + parent + "'" +
                                                           (error ? " (" + error.message() + ")" : std::string()));
-    // a buffer per bucket, of at most 64 MiB in all and at least 4 KiB each
+    // a buffer per bucket: about 64 MiB in all, at least 4 KiB and at most 1.5 MiB each
     buffer_points_ = std::max<std::size_t>(4096 / (3 * sizeof(double)), (std::size_t(64) << 20) / (3 * sizeof(double)) / cells);
     buffer_points_ = std::min<std::size_t>(buffer_points_, 65536);
   }
@@ -88,15 +88,21 @@ public:
     return points;
   }
 
-  // replaces the points of bucket `cell`
+  // replaces the points of bucket `cell` (whose buffer is empty: after flush())
   void replace(std::size_t cell, const std::vector<Point>& points)
   {
-    buffers_[cell].clear();
-    sizes_[cell] = 0;
-    std::error_code ignored;
-    std::filesystem::remove(path(cell), ignored);
-    for(const Point& p : points) add(cell, p);
-    flush(cell);
+    std::vector<double> coordinates;
+    coordinates.reserve(3 * points.size());
+    for(const Point& p : points) {
+      coordinates.push_back(p.x());
+      coordinates.push_back(p.y());
+      coordinates.push_back(p.z());
+    }
+    std::ofstream out(path(cell), std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(coordinates.data()), std::streamsize(coordinates.size() * sizeof(double)));
+    if(!out.flush())
+      throw Input_error(Input_error_code::WRITE_FAILED, "cannot write the bucket file " + path(cell) + " (no space left?)");
+    sizes_[cell] = points.size();
   }
 
   std::size_t size(std::size_t cell) const { return sizes_[cell]; }

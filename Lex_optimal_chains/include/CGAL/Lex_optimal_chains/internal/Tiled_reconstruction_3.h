@@ -29,6 +29,7 @@
 #include <functional>
 #include <iomanip>
 #include <mutex>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -184,6 +185,8 @@ void reconstruct_tiles(const Tile_seams_3<Point>& seams, const std::vector<std::
         std::lock_guard<std::mutex> lock(visitor_mutex);
         s.visitor(r, meshes[t]);
       }
+      if(measured) // the visitor's work (writing the tile) counts for the call, not for the tile
+        report.peak_memory_bytes = (std::max)(report.peak_memory_bytes, peak_resident_bytes());
     } catch(...) {
       errors[t] = std::current_exception();
     }
@@ -195,6 +198,8 @@ void reconstruct_tiles(const Tile_seams_3<Point>& seams, const std::vector<std::
       std::rethrow_exception(errors[t]);
     } catch(const Input_error& e) {
       throw Input_error(e.code(), where + e.what());
+    } catch(const std::bad_alloc&) { // out of memory: as it is
+      throw;
     } catch(const std::exception& e) { // from the visitor
       throw std::runtime_error(where + e.what());
     }
