@@ -22,6 +22,7 @@
 #include <CGAL/property_map.h>
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/Lex_optimal_chains/minimal_chains.h>
+#include <CGAL/Lex_optimal_chains/internal/Sparse_critical_basis.h>
 #include <CGAL/Lex_optimal_chains/Simplex_orders.h>
 #include <CGAL/Lex_optimal_chains/triangulation_complex.h>
 
@@ -380,6 +381,35 @@ void test_properties(CGAL::Random& rng, bool z2)
   if(z2) assert(brute > 40 && relative_brute > 40);
 }
 
+// The sparse Observation 4.54 (internal/Sparse_critical_basis.h) finds the dense critical
+// basis from another basis of the same space of minimal cycles (sums of its elements, in
+// another order), and says which sums of its inputs its elements are.
+template <class Chain>
+void check_sparse_critical_basis(CGAL::Random& rng, const std::vector<Chain>& basis, const std::vector<std::uint32_t>& rank,
+                                 std::size_t m)
+{
+  namespace I = LOC::internal;
+  std::vector<I::Z2_chain> dense;
+  for(const auto& b : basis) {
+    I::Z2_chain c;
+    for(const auto& e : b) c.push_back(rank[e.first]);
+    std::sort(c.begin(), c.end());
+    dense.push_back(c);
+  }
+  std::vector<I::Z2_chain> other;
+  for(std::size_t i = 0; i < dense.size(); ++i)
+    other.push_back(i + 1 < dense.size() ? I::z2_sum(dense[i], dense[i + 1]) : dense[i]);
+  other.push_back(I::z2_sum(other[0], other.back())); // one dependent input
+  CGAL::cpp98::random_shuffle(other.begin(), other.end(), rng);
+  const I::Z2_critical_basis sparse = I::z2_critical_basis(other, m);
+  assert(sparse.elements == dense);
+  for(std::size_t i = 0; i < dense.size(); ++i) {
+    I::Z2_chain sum;
+    for(std::uint32_t j : sparse.sums_of[i]) sum = I::z2_sum(sum, other[j]);
+    assert(sum == dense[i]);
+  }
+}
+
 template <class Field>
 void test_critical_basis(CGAL::Random& rng, bool z2)
 {
@@ -398,6 +428,7 @@ void test_critical_basis(CGAL::Random& rng, bool z2)
     std::vector<std::uint32_t> rank(m);
     for(std::uint32_t r = 0; r < m; ++r) rank[order[r]] = r;
     const auto basis = LOC::critical_basis<Field>(c, k, order);
+    if(z2 && basis.size() > 1) check_sparse_critical_basis(rng, basis, rank, m);
     // its size is the Betti number: m - rank d_k - rank d_{k+1}, ranks by Z2 / field elimination
     auto rank_of = [&](int dim) -> std::size_t {
       if(dim <= 0 || c.number_of_simplices(dim) == 0) return 0;
