@@ -31,6 +31,14 @@ enum seam_spacing_t { seam_spacing };
 enum tile_visitor_t { tile_visitor };
 enum tile_share_t { tile_share };
 enum measure_tile_memory_t { measure_tile_memory };
+enum feature_points_t { feature_points };
+enum feature_threshold_t { feature_threshold };
+enum vcm_offset_radius_t { vcm_offset_radius };
+enum vcm_convolution_radius_t { vcm_convolution_radius };
+enum feature_offset_t { feature_offset };
+enum relative_to_features_t { relative_to_features };
+enum drop_largest_elements_t { drop_largest_elements };
+enum face_element_map_t { face_element_map };
 
 } // namespace internal_np
 
@@ -85,6 +93,22 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_visitor)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_share)
 /// Measures the peak resident memory of the process during each tile of `lex_optimal_tiled_surface_reconstruction()` (Linux).
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(measure_tile_memory)
+/// The feature set \f$S\f$ of `lex_optimal_feature_reconstruction()` (a range of `Point_3`).
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(feature_points)
+/// The threshold of the VCM feature estimate of `lex_optimal_feature_reconstruction()`.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(feature_threshold)
+/// The offset radius of the VCM of `lex_optimal_feature_reconstruction()`.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(vcm_offset_radius)
+/// The convolution radius of the VCM of `lex_optimal_feature_reconstruction()`.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(vcm_convolution_radius)
+/// The offset \f$\epsilon\f$ of the feature set that bounds the subcomplex \f$B\f$ of `lex_optimal_feature_reconstruction()`.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(feature_offset)
+/// Optimal 2-chains relative to \f$B\f$ in `lex_optimal_feature_reconstruction()`.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(relative_to_features)
+/// The number of largest elements of the critical basis that `lex_optimal_feature_reconstruction()` leaves out.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(drop_largest_elements)
+/// Receives the element of the critical basis of each face of `lex_optimal_feature_reconstruction()`.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(face_element_map)
 
 #undef CGAL_LEX_OPTIMAL_CHAINS_PARAMETER
 

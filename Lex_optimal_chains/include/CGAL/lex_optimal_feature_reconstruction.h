@@ -1,0 +1,333 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_LEX_OPTIMAL_FEATURE_RECONSTRUCTION_H
+#define CGAL_LEX_OPTIMAL_FEATURE_RECONSTRUCTION_H
+
+#include <CGAL/license/Lex_optimal_chains.h>
+
+#include <CGAL/lex_optimal_homologous_chain.h>
+#include <CGAL/Lex_optimal_chains/Feature_reconstruction_report.h>
+#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Simplex_orders.h>
+#include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
+#include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
+#include <CGAL/Lex_optimal_chains/internal/Feature_subcomplex_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Sparse_critical_basis.h>
+#include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/compute_average_spacing.h>
+#include <CGAL/vcm_estimate_edges.h>
+#include <CGAL/vcm_estimate_normals.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <iterator>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Lex_optimal_chains {
+namespace internal {
+
+// The points of `points` on sharp feature edges by the Voronoi covariance measure (CGAL's
+// compute_vcm() and vcm_is_on_feature_edge()): offset radius R and convolution radius r.
+template <class Point>
+std::vector<Point> vcm_feature_points(const std::vector<Point>& points, double offset_radius,
+                                      double convolution_radius, double threshold)
+{
+  std::vector<std::array<double, 6>> covariance;
+  compute_vcm(points, covariance, offset_radius, convolution_radius);
+  std::vector<Point> features;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(vcm_is_on_feature_edge(covariance[i], threshold)) features.push_back(points[i]);
+  return features;
+}
+
+// A triangle as the indices of its vertices in the sorted points, increasing.
+using Triangle_key = std::array<std::uint32_t, 3>;
+
+// The vertex of `dt` at each feature point (the nearest one for a point that is not a vertex).
+template <class DT, class Point>
+std::vector<typename DT::Vertex_handle> feature_vertices(const DT& dt, const std::vector<Point>& features)
+{
+  std::vector<typename DT::Vertex_handle> result;
+  for(const Point& p : features) result.push_back(dt.nearest_vertex(p));
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
+} // namespace internal
+} // namespace Lex_optimal_chains
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Reconstructs a surface from points through the critical basis of the relative 2-cycles of
+their Delaunay triangulation \f$K\f$ around sharp features (thesis section 4.8.3, Fig. 4.29):
+1. a set \f$S\f$ of feature points: given (`feature_points`), or the points on sharp feature
+   edges by the Voronoi covariance measure (`CGAL::compute_vcm()` and
+   `CGAL::vcm_is_on_feature_edge()` with `feature_threshold`);
+2. the subcomplex \f$B\f$ of \f$K\f$ around \f$S\f$: the vertices within the offset
+   \f$\epsilon\f$ (`feature_offset`) of \f$S\f$, and the edges and triangles of \f$K\f$ on
+   them whose edges are at most \f$2\epsilon\f$ long;
+3. the optimal 1-cycles of \f$B\f$ whose classes form a basis of \f$H_1(B)\f$ (the critical
+   basis of \f$Z^{\min}_1(B)\f$, by the dense reduction of \f$B\f$), \f$\beta\f$ of them;
+4. for each, a representative 2-chain of \f$K\f$ bounded by it (Algorithm 11) made optimal
+   (Algorithm 10): absolute, or relative to \f$B\f$ with `relative_to_features`; as
+   \f$H_2(K, B) \simeq H_1(B)\f$, these form a basis of \f$Z^{\min}_2(K, B)\f$;
+5. its critical basis (Observation 4.54, with sparse columns), in increasing order.
+
+The mesh is the union of the elements of the critical basis but the `drop_largest_elements`
+largest ones (dropping the largest elements opens the holes that they close, such as
+occlusions); each face is labelled with the index of the first element that holds it. The
+coefficients are in \f$\mathbb{Z}_2\f$; the faces are oriented by a traversal, and
+non-manifold edges and vertices are split as in the other reconstructions.
+
+\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+\tparam PolygonMesh a model of `MutableFaceGraph`
+
+\param points the input points (duplicates are merged); not modified
+\param mesh receives the result (its elements removed first, its property maps kept); on success only
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map giving the point of an element of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` with value type a `Point_3` with `double` coordinates}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{feature_points}
+    \cgalParamDescription{the feature set \f$S\f$ (each point taken at the nearest input point)}
+    \cgalParamType{a range of `Point_3`}
+    \cgalParamDefault{the points on sharp edges by the VCM}
+  \cgalParamNEnd
+  \cgalParamNBegin{feature_threshold}
+    \cgalParamDescription{the threshold of `CGAL::vcm_is_on_feature_edge()` (the ratio of the
+                          middle eigenvalue of a point's covariance to their sum)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{0.16}
+  \cgalParamNEnd
+  \cgalParamNBegin{vcm_offset_radius}
+    \cgalParamDescription{the offset radius of `CGAL::compute_vcm()`}
+    \cgalParamType{`double`}
+    \cgalParamDefault{6 times the average spacing of the points}
+  \cgalParamNEnd
+  \cgalParamNBegin{vcm_convolution_radius}
+    \cgalParamDescription{the convolution radius of `CGAL::compute_vcm()`}
+    \cgalParamType{`double`}
+    \cgalParamDefault{3 times the average spacing of the points}
+  \cgalParamNEnd
+  \cgalParamNBegin{feature_offset}
+    \cgalParamDescription{the offset \f$\epsilon\f$ of \f$S\f$ that bounds \f$B\f$}
+    \cgalParamType{`double`}
+    \cgalParamDefault{1.5 times the average spacing of the points}
+  \cgalParamNEnd
+  \cgalParamNBegin{relative_to_features}
+    \cgalParamDescription{optimal 2-chains relative to \f$B\f$ (their boundaries may move in
+                          \f$B\f$, and they have no triangle of \f$B\f$) instead of bounded
+                          by the cycles}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{drop_largest_elements}
+    \cgalParamDescription{the number of largest elements of the basis left out of the mesh}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_element_map}
+    \cgalParamDescription{receives the element of each face of the mesh}
+    \cgalParamType{a model of `WritablePropertyMap` from `boost::graph_traits<PolygonMesh>::%face_descriptor` to `std::size_t`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\return what was done, with the size of every element
+
+\throws Lex_optimal_chains::Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`,
+`TOO_FEW_POINTS` or `DEGENERATE_POINT_SET` for points that span no tetrahedron,
+`INVALID_PARAMETER` for a non-positive offset, radius or threshold, `EMPTY_RESULT` when
+\f$B\f$ has no cycle (no feature, or an offset too small to link the features) or every
+element is dropped. `mesh` is then unchanged.
+*/
+template <class PointRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Feature_reconstruction_report
+lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  namespace LOC = Lex_optimal_chains;
+  using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
+  using Point = typename boost::property_traits<Point_map>::value_type;
+  using Kernel = typename Kernel_traits<Point>::Kernel;
+  using DT = Delaunay_triangulation_3<Kernel>;
+  using LOC::internal::Triangle_key;
+  LOC::Feature_reconstruction_report report;
+  LOC::internal::Stopwatch total, watch;
+
+  std::vector<Point> pts = LOC::internal::finite_points<Point>(points, choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map)));
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  report.number_of_input_points = pts.size();
+  if(pts.size() < 4) throw LOC::Input_error(LOC::Input_error_code::TOO_FEW_POINTS, "fewer than 4 distinct points");
+  report.average_spacing = compute_average_spacing<Sequential_tag>(pts, 6);
+  auto positive = [](double value, const char* name) {
+    if(!(value > 0) || !std::isfinite(value))
+      throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
+                             std::string("the ") + name + " must be positive and finite (it is " + std::to_string(value) + ")");
+    return value;
+  };
+  const double s = report.average_spacing;
+  const double epsilon = positive(choose_parameter(get_parameter(np, LOC::internal_np::feature_offset), 1.5 * s), "feature offset");
+  const double threshold = positive(choose_parameter(get_parameter(np, LOC::internal_np::feature_threshold), 0.16), "feature threshold");
+  const double offset_radius = positive(choose_parameter(get_parameter(np, LOC::internal_np::vcm_offset_radius), 6 * s), "VCM offset radius");
+  const double convolution_radius =
+    positive(choose_parameter(get_parameter(np, LOC::internal_np::vcm_convolution_radius), 3 * s), "VCM convolution radius");
+  const bool relative = choose_parameter(get_parameter(np, LOC::internal_np::relative_to_features), false);
+  const std::size_t drop = choose_parameter(get_parameter(np, LOC::internal_np::drop_largest_elements), std::size_t(0));
+  report.offset = epsilon;
+
+  DT dt(pts.begin(), pts.end());
+  LOC::internal::check_dimension(dt);
+  report.delaunay_seconds = watch.lap();
+
+  std::vector<Point> features;
+  if constexpr(!is_default_parameter<NamedParameters, LOC::internal_np::feature_points_t>::value) {
+    for(const Point& p : get_parameter(np, LOC::internal_np::feature_points)) features.push_back(p);
+  } else {
+    features = LOC::internal::vcm_feature_points(pts, offset_radius, convolution_radius, threshold);
+    report.feature_seconds = watch.lap();
+  }
+  const auto feature_vertices = LOC::internal::feature_vertices(dt, features);
+  report.number_of_feature_points = feature_vertices.size();
+
+  // B and its optimal 1-cycles
+  const LOC::internal::Feature_subcomplex_3<DT> b(dt, feature_vertices, epsilon);
+  report.subcomplex_vertices = b.vertices.size();
+  report.subcomplex_edges = b.number_of_edges;
+  report.subcomplex_triangles = b.facets.size();
+  const auto cycles = b.optimal_cycles();
+  report.number_of_cycles = cycles.size();
+  report.subcomplex_seconds = watch.lap();
+  if(cycles.empty())
+    throw LOC::Input_error(LOC::Input_error_code::EMPTY_RESULT,
+                           "the subcomplex around the " + std::to_string(feature_vertices.size()) +
+                             " feature points has no cycle: no feature found, or an offset too small to link them");
+
+  // a basis of Z^min_2(K, B): the optimal 2-chain of each cycle, as triangle keys
+  auto key_of = [&](const typename DT::Facet& f) {
+    Triangle_key k;
+    for(int j = 0; j < 3; ++j)
+      k[j] = std::uint32_t(std::lower_bound(pts.begin(), pts.end(), f.first->vertex((f.second + 1 + j) & 3)->point()) - pts.begin());
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::vector<std::vector<Triangle_key>> chains;
+  for(const auto& cycle : cycles) {
+    std::vector<std::pair<typename DT::Facet, std::int64_t>> chain;
+    if(relative)
+      lex_optimal_chain_with_boundary(dt, cycle, std::back_inserter(chain),
+                                      LOC::parameters::coefficient_field(LOC::Coefficient_field::Z2,
+                                                                         LOC::parameters::relative_facets(b.facets)));
+    else
+      lex_optimal_chain_with_boundary(dt, cycle, std::back_inserter(chain),
+                                      LOC::parameters::coefficient_field(LOC::Coefficient_field::Z2));
+    std::vector<Triangle_key> keys;
+    for(const auto& fk : chain) keys.push_back(key_of(fk.first));
+    std::sort(keys.begin(), keys.end());
+    chains.push_back(std::move(keys));
+  }
+  report.chain_seconds = watch.lap();
+
+  // the triangles of the chains ranked in the order of the package; the critical basis
+  std::vector<Triangle_key> triangles;
+  for(const auto& c : chains) triangles.insert(triangles.end(), c.begin(), c.end());
+  std::sort(triangles.begin(), triangles.end());
+  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+  const LOC::Triangle_order<Point> order(pts);
+  std::vector<std::uint32_t> by_order(triangles.size());
+  for(std::uint32_t i = 0; i < by_order.size(); ++i) by_order[i] = i;
+  std::sort(by_order.begin(), by_order.end(), [&](std::uint32_t a, std::uint32_t c) {
+    const auto& x = triangles[a];
+    const auto& y = triangles[c];
+    return order({x[0], x[1], x[2]}, {y[0], y[1], y[2]});
+  });
+  std::vector<std::uint32_t> rank(triangles.size());
+  for(std::uint32_t r = 0; r < by_order.size(); ++r) rank[by_order[r]] = r;
+  std::vector<Triangle_key> b_triangles;
+  for(const auto& f : b.facets) b_triangles.push_back(key_of(f));
+  std::sort(b_triangles.begin(), b_triangles.end());
+  std::vector<LOC::internal::Z2_chain> absolute(chains.size()), relative_parts(chains.size());
+  for(std::size_t i = 0; i < chains.size(); ++i) {
+    for(const Triangle_key& t : chains[i]) {
+      const std::uint32_t r = rank[std::size_t(std::lower_bound(triangles.begin(), triangles.end(), t) - triangles.begin())];
+      absolute[i].push_back(r);
+      if(!std::binary_search(b_triangles.begin(), b_triangles.end(), t)) relative_parts[i].push_back(r);
+    }
+    std::sort(absolute[i].begin(), absolute[i].end());
+    std::sort(relative_parts[i].begin(), relative_parts[i].end());
+  }
+  const LOC::internal::Z2_critical_basis basis = LOC::internal::z2_critical_basis(std::move(relative_parts), triangles.size());
+  report.basis_seconds = watch.lap();
+
+  // the mesh: the elements but the largest ones, each face labelled by its first element
+  const std::size_t kept = basis.elements.size() > drop ? basis.elements.size() - drop : 0;
+  report.number_of_dropped_elements = basis.elements.size() - kept;
+  if(kept == 0)
+    throw LOC::Input_error(LOC::Input_error_code::EMPTY_RESULT, "every element of the critical basis is dropped");
+  std::vector<std::uint32_t> element_of(triangles.size(), std::uint32_t(-1));
+  for(std::size_t e = 0; e < basis.elements.size(); ++e) {
+    LOC::internal::Z2_chain whole;
+    for(std::uint32_t j : basis.sums_of[e]) whole = LOC::internal::z2_sum(whole, absolute[j]);
+    report.element_sizes.push_back(whole.size());
+    if(e >= kept) continue;
+    for(std::uint32_t r : whole)
+      if(element_of[r] == std::uint32_t(-1)) element_of[r] = std::uint32_t(e);
+  }
+  std::vector<std::array<std::uint32_t, 3>> soup;
+  std::map<std::array<Point, 3>, std::size_t> label;
+  for(std::uint32_t r = 0; r < by_order.size(); ++r) {
+    if(element_of[r] == std::uint32_t(-1)) continue;
+    const Triangle_key& t = triangles[by_order[r]];
+    soup.push_back({t[0], t[1], t[2]});
+    label[{pts[t[0]], pts[t[1]], pts[t[2]]}] = element_of[r];
+  }
+  PolygonMesh result;
+  LOC::internal::add_chain_soup(pts, soup, false, result);
+  // into the caller's mesh, emptied without removing its property maps (the element map may be one)
+  using Face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  while(!faces(mesh).empty()) remove_face(*faces(mesh).begin(), mesh);
+  while(!edges(mesh).empty()) remove_edge(*edges(mesh).begin(), mesh);
+  while(!vertices(mesh).empty()) remove_vertex(*vertices(mesh).begin(), mesh);
+  std::vector<std::pair<Face, Face>> face_pairs;
+  copy_face_graph(result, mesh, parameters::face_to_face_output_iterator(std::back_inserter(face_pairs)));
+  if constexpr(!is_default_parameter<NamedParameters, LOC::internal_np::face_element_map_t>::value) {
+    auto element_map = get_parameter(np, LOC::internal_np::face_element_map);
+    const auto vpm = get(vertex_point, result);
+    for(const auto& [from, to] : face_pairs) {
+      std::array<Point, 3> corners;
+      std::size_t k = 0;
+      for(auto v : vertices_around_face(halfedge(from, result), result)) corners[k++] = get(vpm, v);
+      std::sort(corners.begin(), corners.end());
+      put(element_map, to, label.at(corners));
+    }
+  }
+  report.mesh_vertices = std::size_t(std::distance(vertices(mesh).begin(), vertices(mesh).end()));
+  report.mesh_faces = std::size_t(std::distance(faces(mesh).begin(), faces(mesh).end()));
+  report.mesh_seconds = watch.lap();
+  report.total_seconds = total.lap();
+  return report;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_LEX_OPTIMAL_FEATURE_RECONSTRUCTION_H
