@@ -7,6 +7,8 @@
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/lex_optimal_feature_reconstruction.h>
+#include <CGAL/Lex_optimal_chains/triangulation_complex.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include "test_support.h"
 
@@ -127,8 +129,115 @@ void test_cube()
   check_cube("VCM", vcm_mesh, vcm_element, r, 5);
 }
 
+// On a small cube, relative to B: the elements are those of the dense critical basis of
+// Z^min_2(K, B) (critical_basis() on the complex of the triangulation, the same order), each
+// with the same triangles.
+void test_dense_agreement()
+{
+  std::cout << "small cube: the dense critical basis of (K, B)" << std::endl;
+  using DT = CGAL::Delaunay_triangulation_3<Kernel>;
+  CGAL::Random rng(11);
+  std::vector<Point> edges;
+  std::vector<Point> points = sampled_cube(rng, 5, edges);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  Mesh mesh;
+  auto element = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:element", std::size_t(-1)).first;
+  const LOC::Feature_reconstruction_report r = CGAL::lex_optimal_feature_reconstruction(
+    points, mesh, LOC::parameters::feature_points(edges, LOC::parameters::face_element_map(element, LOC::parameters::relative_to_features(true))));
+  // the dense side: the complex of the triangulation, B on its vertices, the same subcomplex
+  const DT dt(points.begin(), points.end());
+  std::vector<DT::Vertex_handle> features;
+  for(const Point& p : edges) features.push_back(dt.nearest_vertex(p));
+  std::sort(features.begin(), features.end());
+  features.erase(std::unique(features.begin(), features.end()), features.end());
+  const LOC::internal::Feature_subcomplex_3<DT> b(dt, features, r.offset);
+  const auto k = LOC::triangulation_complex_3(dt);
+  std::map<DT::Vertex_handle, std::uint32_t> index;
+  std::vector<Point> k_points;
+  for(std::uint32_t i = 0; i < k.vertices.size(); ++i) { index[k.vertices[i]] = i; k_points.push_back(k.vertices[i]->point()); }
+  LOC::Simplicial_complex b_complex(std::uint32_t(k.vertices.size()));
+  for(std::uint32_t e = 0; e < b.complex.number_of_simplices(1); ++e) {
+    const auto& s = b.complex.simplex(1, e);
+    b_complex.add_simplex({std::min(index[b.vertices[s[0]]], index[b.vertices[s[1]]]), std::max(index[b.vertices[s[0]]], index[b.vertices[s[1]]])});
+  }
+  for(std::uint32_t t = 0; t < b.complex.number_of_simplices(2); ++t) {
+    const auto& s = b.complex.simplex(2, t);
+    std::array<std::uint32_t, 3> v{index[b.vertices[s[0]]], index[b.vertices[s[1]]], index[b.vertices[s[2]]]};
+    std::sort(v.begin(), v.end());
+    b_complex.add_simplex({v[0], v[1], v[2]});
+  }
+  const LOC::Triangle_order<Point> order(k_points);
+  const std::vector<std::uint32_t> sorted = LOC::sort_simplices(k.complex, 2, order);
+  const auto dense = LOC::critical_basis<LOC::Z2_field>(k.complex, 2, sorted, &b_complex);
+  assert(dense.size() == r.number_of_cycles);
+  // the triangles of each element, as points
+  using Triangle = std::array<Point, 3>;
+  std::vector<std::set<Triangle>> dense_elements;
+  for(const auto& c : dense) {
+    std::set<Triangle> triangles;
+    for(const auto& e : c) {
+      const auto& s = k.complex.simplex(2, e.first);
+      Triangle t{k_points[s[0]], k_points[s[1]], k_points[s[2]]};
+      std::sort(t.begin(), t.end());
+      triangles.insert(t);
+    }
+    dense_elements.push_back(triangles);
+  }
+  for(std::size_t e = 0; e < dense.size(); ++e) assert(r.element_sizes[e] == dense_elements[e].size());
+  // every face of the mesh is in its element, and in no element before it
+  for(auto f : mesh.faces()) {
+    Triangle t;
+    int j = 0;
+    for(auto v : mesh.vertices_around_face(mesh.halfedge(f))) t[std::size_t(j++)] = mesh.point(v);
+    std::sort(t.begin(), t.end());
+    const std::size_t e = element[f];
+    assert(dense_elements[e].count(t) == 1);
+    for(std::size_t before = 0; before < e; ++before) assert(dense_elements[before].count(t) == 0);
+  }
+  std::cout << "  " << dense.size() << " elements of " << r.element_sizes[0] << ", ... triangles: the same as the dense ones ("
+            << mesh.number_of_faces() << " faces)" << std::endl;
+}
+
+void test_bad_input()
+{
+  std::cout << "bad input" << std::endl;
+  CGAL::Random rng(2);
+  std::vector<Point> edges;
+  const std::vector<Point> points = sampled_cube(rng, 8, edges);
+  Mesh mesh;
+  CGAL::make_tetrahedron(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), mesh);
+  using Code = LOC::Input_error_code;
+  expect_error(Code::EMPTY_INPUT, [&] { CGAL::lex_optimal_feature_reconstruction(std::vector<Point>(), mesh); });
+  std::vector<Point> nan = points;
+  nan[3] = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  expect_error(Code::NON_FINITE_COORDINATE, [&] { CGAL::lex_optimal_feature_reconstruction(nan, mesh); });
+  expect_error(Code::TOO_FEW_POINTS, [&] {
+    CGAL::lex_optimal_feature_reconstruction(std::vector<Point>{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 0, 0)}, mesh);
+  });
+  std::vector<Point> flat;
+  for(int i = 0; i < 50; ++i) flat.emplace_back(rng.get_double(), rng.get_double(), 0.);
+  expect_error(Code::DEGENERATE_POINT_SET, [&] { CGAL::lex_optimal_feature_reconstruction(flat, mesh); });
+  expect_error(Code::INVALID_PARAMETER, [&] {
+    CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_offset(-1.));
+  });
+  expect_error(Code::INVALID_PARAMETER, [&] {
+    CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_threshold(std::numeric_limits<double>::quiet_NaN()));
+  });
+  // one feature point: B has no cycle
+  expect_error(Code::EMPTY_RESULT, [&] {
+    CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_points(std::vector<Point>{points[0]}));
+  });
+  expect_error(Code::EMPTY_RESULT, [&] {
+    CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_points(edges, LOC::parameters::drop_largest_elements(5)));
+  });
+  assert(mesh.number_of_faces() == 4); // unchanged
+}
+
 int main()
 {
+  test_bad_input();
+  test_dense_agreement();
   test_cube();
   std::cout << "done" << std::endl;
   return 0;
