@@ -235,6 +235,39 @@ if(NOT rc EQUAL 0 OR loops LESS 2 OR split EQUAL 0 OR NOT resolved EQUAL 0)
   message(FATAL_ERROR "b9_training --keep-non-manifold: the optimum is not kept as it is: ${json}")
 endif()
 
+# ----- features: the critical basis around sharp features -----
+set(fandisk "${DATA}/meshes/fandisk.off")
+execute_process(COMMAND "${PROGRAM}" features "${fandisk}" "${WORK}/fandisk_elements.ply" --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "features fandisk: exit code ${rc}: ${err}")
+endif()
+expect_json_keys("features fandisk" "${json}" points feature_points subcomplex_simplices cycles elements faces
+                 delaunay_s feature_s subcomplex_s chains_s basis_s mesh_s total_s)
+string(JSON cycles GET "${json}" cycles)
+string(JSON elements GET "${json}" elements)
+string(JSON faces GET "${json}" faces)
+if(cycles LESS 5 OR NOT elements EQUAL cycles OR faces LESS 5000)
+  message(FATAL_ERROR "features fandisk: not a surface in several elements: ${json}")
+endif()
+file(READ "${WORK}/fandisk_elements.ply" header LIMIT 400)
+if(NOT header MATCHES "property int element")
+  message(FATAL_ERROR "features fandisk: the PLY file has no element property: ${header}")
+endif()
+# the largest element dropped: fewer faces
+math(EXPR all_but_one "${elements} - 1")
+execute_process(COMMAND "${PROGRAM}" features "${fandisk}" "${WORK}/fandisk_dropped.off" --drop-largest 1 --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE json_dropped ERROR_VARIABLE err)
+string(JSON faces_dropped GET "${json_dropped}" faces)
+if(NOT rc EQUAL 0 OR NOT faces_dropped LESS faces)
+  message(FATAL_ERROR "features fandisk --drop-largest 1: ${rc} ${err} ${json_dropped}")
+endif()
+message(STATUS "features fandisk: ${elements} elements, ${faces} faces; ${faces_dropped} without the largest")
+expect_failure_because(features_no_cycle "no cycle" features "${fandisk}" --offset 0.000001)
+expect_failure_because(features_drop_all "dropped" features "${fandisk}" --drop-largest 1000)
+expect_failure_because(features_threshold "threshold" features "${fandisk}" --threshold -1)
+expect_failure_because(features_missing "cannot" features "${WORK}/missing.xyz")
+
 # ----- tiles: one mesh per tile, their union welded at the seams -----
 # bad input: one line, exit code 1, no tile directory and no merged mesh
 function(expect_tiles_failure name reason)
