@@ -789,11 +789,17 @@ int main(int argc, char** argv)
   CLI::App* features = app.add_subcommand("features", "a surface decomposed into the elements of the critical basis around sharp features");
   features->add_option("INPUT", input, "points: .xyz, .ply, .off or .las")->required();
   features->add_option("OUTPUT", output, "mesh: .off, .ply (with the element of each face) or .obj")->required();
+  const CLI::Validator positive_number(
+    [](std::string& text) {
+      const double v = std::strtod(text.c_str(), nullptr);
+      return std::isfinite(v) && v > 0 ? std::string() : "must be a positive finite number, not " + text;
+    },
+    "POSITIVE");
   features->add_option("--threshold", features_options.threshold, "threshold of the VCM feature estimate (default 0.16)")
-    ->check(CLI::PositiveNumber);
+    ->check(positive_number);
   features->add_option("--offset", features_options.offset,
                        "offset of the feature points that bounds the subcomplex (default: 1.5 times the average spacing)")
-    ->check(CLI::PositiveNumber);
+    ->check(positive_number);
   features->add_option("--drop-largest", features_options.drop_largest, "leave the K largest elements out (opens occlusion holes)");
   features->add_flag("--relative", features_options.relative, "optimal chains relative to the subcomplex around the features");
   features->add_flag("--ascii", options.ascii, "write a .ply mesh as text, without the elements (binary by default)");
