@@ -224,6 +224,11 @@ void test_bad_input()
   expect_error(Code::INVALID_PARAMETER, [&] {
     CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_threshold(std::numeric_limits<double>::quiet_NaN()));
   });
+  std::vector<Point> nan_features = edges;
+  nan_features[5] = Point(0, std::numeric_limits<double>::infinity(), 0);
+  expect_error(Code::NON_FINITE_COORDINATE, [&] {
+    CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_points(nan_features));
+  });
   // one feature point: B has no cycle
   expect_error(Code::EMPTY_RESULT, [&] {
     CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_points(std::vector<Point>{points[0]}));

@@ -27,9 +27,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <iterator>
 #include <map>
+#include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -65,6 +68,80 @@ std::vector<typename DT::Vertex_handle> feature_vertices(const DT& dt, const std
   return result;
 }
 
+// Replaces the elements of `mesh` (keeping its property maps: the element map may be one) by
+// the triangle soup `soup` of `points`, oriented by a traversal, and puts in `element_map` the
+// label of each face, `label` giving it by the sorted points of the face.
+template <class Point, class PolygonMesh, class ElementMapPointer>
+void mesh_with_elements(const std::vector<Point>& points, std::vector<std::array<std::uint32_t, 3>>& soup,
+                        const std::map<std::array<Point, 3>, std::size_t>& label, PolygonMesh& mesh,
+                        ElementMapPointer element_map) // a pointer, or nullptr
+{
+  using Face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  PolygonMesh result;
+  add_chain_soup(points, soup, false, result);
+  // the descriptors first: a range of a mesh with removed elements skips them at every begin()
+  const std::vector<Face> old_faces(faces(mesh).begin(), faces(mesh).end());
+  for(Face f : old_faces) remove_face(f, mesh);
+  const std::vector<typename boost::graph_traits<PolygonMesh>::edge_descriptor> old_edges(edges(mesh).begin(), edges(mesh).end());
+  for(auto e : old_edges) remove_edge(e, mesh);
+  const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> old_vertices(vertices(mesh).begin(),
+                                                                                                vertices(mesh).end());
+  for(auto v : old_vertices) remove_vertex(v, mesh);
+  std::vector<std::pair<Face, Face>> face_pairs;
+  copy_face_graph(result, mesh, parameters::face_to_face_output_iterator(std::back_inserter(face_pairs)));
+  if constexpr(!std::is_same<ElementMapPointer, std::nullptr_t>::value) {
+    const auto vpm = get(vertex_point, result);
+    for(const auto& [from, to] : face_pairs) {
+      std::array<Point, 3> corners;
+      std::size_t k = 0;
+      for(auto v : vertices_around_face(halfedge(from, result), result)) corners[k++] = get(vpm, v);
+      std::sort(corners.begin(), corners.end());
+      put(*element_map, to, label.at(corners));
+    }
+  }
+}
+
+// The triangles of `chains` (keys into the sorted `points`) ranked in the package's order on
+// triangles: `triangles` sorted by key, `by_order[r]` the triangle of rank r, and each chain as
+// the increasing ranks of its triangles, whole (`absolute`) and without those of `b_triangles`
+// (sorted keys: `relative`).
+template <class Point>
+struct Ranked_chains
+{
+  std::vector<Triangle_key> triangles;
+  std::vector<std::uint32_t> by_order;
+  std::vector<Z2_chain> absolute, relative;
+
+  Ranked_chains(const std::vector<Point>& points, const std::vector<std::vector<Triangle_key>>& chains,
+                const std::vector<Triangle_key>& b_triangles)
+    : absolute(chains.size()), relative(chains.size())
+  {
+    for(const auto& c : chains) triangles.insert(triangles.end(), c.begin(), c.end());
+    std::sort(triangles.begin(), triangles.end());
+    triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+    const Triangle_order<Point> order(points);
+    using Key = decltype(order.key({0, 1, 2}));
+    std::vector<std::pair<Key, std::uint32_t>> keyed; // the radii computed once per triangle
+    for(std::uint32_t i = 0; i < triangles.size(); ++i)
+      keyed.emplace_back(order.key({triangles[i][0], triangles[i][1], triangles[i][2]}), i);
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return compare(a.first, b.first) == SMALLER; });
+    std::vector<std::uint32_t> rank(triangles.size());
+    for(std::uint32_t r = 0; r < keyed.size(); ++r) {
+      by_order.push_back(keyed[r].second);
+      rank[keyed[r].second] = r;
+    }
+    for(std::size_t i = 0; i < chains.size(); ++i) {
+      for(const Triangle_key& t : chains[i]) {
+        const std::uint32_t r = rank[std::size_t(std::lower_bound(triangles.begin(), triangles.end(), t) - triangles.begin())];
+        absolute[i].push_back(r);
+        if(!std::binary_search(b_triangles.begin(), b_triangles.end(), t)) relative[i].push_back(r);
+      }
+      std::sort(absolute[i].begin(), absolute[i].end());
+      std::sort(relative[i].begin(), relative[i].end());
+    }
+  }
+};
+
 } // namespace internal
 } // namespace Lex_optimal_chains
 
@@ -82,9 +159,14 @@ their Delaunay triangulation \f$K\f$ around sharp features (thesis section 4.8.3
 3. the optimal 1-cycles of \f$B\f$ whose classes form a basis of \f$H_1(B)\f$ (the critical
    basis of \f$Z^{\min}_1(B)\f$, by the dense reduction of \f$B\f$), \f$\beta\f$ of them;
 4. for each, a representative 2-chain of \f$K\f$ bounded by it (Algorithm 11) made optimal
-   (Algorithm 10): absolute, or relative to \f$B\f$ with `relative_to_features`; as
-   \f$H_2(K, B) \simeq H_1(B)\f$, these form a basis of \f$Z^{\min}_2(K, B)\f$;
-5. its critical basis (Observation 4.54, with sparse columns), in increasing order.
+   (Algorithm 10): the smallest chain bounded by the cycle (absolute, the thesis's choice for
+   its Fig. 4.31), or, with `relative_to_features`, the smallest chain of its class relative to
+   \f$B\f$; as \f$H_2(K, B) \simeq H_1(B)\f$, the relative ones form a basis of
+   \f$Z^{\min}_2(K, B)\f$ (the absolute ones are independent relative to \f$B\f$ too, but
+   their parts outside \f$B\f$ need not be minimal in their classes);
+5. the critical basis of their span (Observation 4.54, with sparse columns), in increasing
+   order; the *largest* elements are the last ones in this order (the lexicographic order of
+   their triangles), not those with the most triangles.
 
 The mesh is the union of the elements of the critical basis but the `drop_largest_elements`
 largest ones (dropping the largest elements opens the holes that they close, such as
@@ -138,7 +220,8 @@ non-manifold edges and vertices are split as in the other reconstructions.
     \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{drop_largest_elements}
-    \cgalParamDescription{the number of largest elements of the basis left out of the mesh}
+    \cgalParamDescription{the number of largest elements of the basis (the last ones in its
+                          lexicographic order) left out of the mesh}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{0}
   \cgalParamNEnd
@@ -153,7 +236,7 @@ non-manifold edges and vertices are split as in the other reconstructions.
 
 \throws Lex_optimal_chains::Input_error with code `EMPTY_INPUT`, `NON_FINITE_COORDINATE`,
 `TOO_FEW_POINTS` or `DEGENERATE_POINT_SET` for points that span no tetrahedron,
-`INVALID_PARAMETER` for a non-positive offset, radius or threshold, `EMPTY_RESULT` when
+`NON_FINITE_COORDINATE` for a feature point too, `INVALID_PARAMETER` for a non-positive offset, radius or threshold, `EMPTY_RESULT` when
 \f$B\f$ has no cycle (no feature, or an offset too small to link the features) or every
 element is dropped. `mesh` is then unchanged.
 */
@@ -202,7 +285,12 @@ lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
 
   std::vector<Point> features;
   if constexpr(!is_default_parameter<NamedParameters, LOC::internal_np::feature_points_t>::value) {
-    for(const Point& p : get_parameter(np, LOC::internal_np::feature_points)) features.push_back(p);
+    for(const Point& p : get_parameter(np, LOC::internal_np::feature_points)) {
+      if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+        throw LOC::Input_error(LOC::Input_error_code::NON_FINITE_COORDINATE,
+                               "feature point " + std::to_string(features.size()) + " has a NaN or infinite coordinate");
+      features.push_back(p);
+    }
   } else {
     features = LOC::internal::vcm_feature_points(pts, offset_radius, convolution_radius, threshold);
     report.feature_seconds = watch.lap();
@@ -249,34 +337,11 @@ lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
   report.chain_seconds = watch.lap();
 
   // the triangles of the chains ranked in the order of the package; the critical basis
-  std::vector<Triangle_key> triangles;
-  for(const auto& c : chains) triangles.insert(triangles.end(), c.begin(), c.end());
-  std::sort(triangles.begin(), triangles.end());
-  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
-  const LOC::Triangle_order<Point> order(pts);
-  std::vector<std::uint32_t> by_order(triangles.size());
-  for(std::uint32_t i = 0; i < by_order.size(); ++i) by_order[i] = i;
-  std::sort(by_order.begin(), by_order.end(), [&](std::uint32_t a, std::uint32_t c) {
-    const auto& x = triangles[a];
-    const auto& y = triangles[c];
-    return order({x[0], x[1], x[2]}, {y[0], y[1], y[2]});
-  });
-  std::vector<std::uint32_t> rank(triangles.size());
-  for(std::uint32_t r = 0; r < by_order.size(); ++r) rank[by_order[r]] = r;
   std::vector<Triangle_key> b_triangles;
   for(const auto& f : b.facets) b_triangles.push_back(key_of(f));
   std::sort(b_triangles.begin(), b_triangles.end());
-  std::vector<LOC::internal::Z2_chain> absolute(chains.size()), relative_parts(chains.size());
-  for(std::size_t i = 0; i < chains.size(); ++i) {
-    for(const Triangle_key& t : chains[i]) {
-      const std::uint32_t r = rank[std::size_t(std::lower_bound(triangles.begin(), triangles.end(), t) - triangles.begin())];
-      absolute[i].push_back(r);
-      if(!std::binary_search(b_triangles.begin(), b_triangles.end(), t)) relative_parts[i].push_back(r);
-    }
-    std::sort(absolute[i].begin(), absolute[i].end());
-    std::sort(relative_parts[i].begin(), relative_parts[i].end());
-  }
-  const LOC::internal::Z2_critical_basis basis = LOC::internal::z2_critical_basis(std::move(relative_parts), triangles.size());
+  LOC::internal::Ranked_chains<Point> ranked(pts, chains, b_triangles);
+  const LOC::internal::Z2_critical_basis basis = LOC::internal::z2_critical_basis(std::move(ranked.relative), ranked.triangles.size());
   report.basis_seconds = watch.lap();
 
   // the mesh: the elements but the largest ones, each face labelled by its first element
@@ -284,10 +349,10 @@ lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
   report.number_of_dropped_elements = basis.elements.size() - kept;
   if(kept == 0)
     throw LOC::Input_error(LOC::Input_error_code::EMPTY_RESULT, "every element of the critical basis is dropped");
-  std::vector<std::uint32_t> element_of(triangles.size(), std::uint32_t(-1));
+  std::vector<std::uint32_t> element_of(ranked.triangles.size(), std::uint32_t(-1));
   for(std::size_t e = 0; e < basis.elements.size(); ++e) {
     LOC::internal::Z2_chain whole;
-    for(std::uint32_t j : basis.sums_of[e]) whole = LOC::internal::z2_sum(whole, absolute[j]);
+    for(std::uint32_t j : basis.sums_of[e]) whole = LOC::internal::z2_sum(whole, ranked.absolute[j]);
     report.element_sizes.push_back(whole.size());
     if(e >= kept) continue;
     for(std::uint32_t r : whole)
@@ -295,31 +360,17 @@ lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
   }
   std::vector<std::array<std::uint32_t, 3>> soup;
   std::map<std::array<Point, 3>, std::size_t> label;
-  for(std::uint32_t r = 0; r < by_order.size(); ++r) {
+  for(std::uint32_t r = 0; r < ranked.by_order.size(); ++r) {
     if(element_of[r] == std::uint32_t(-1)) continue;
-    const Triangle_key& t = triangles[by_order[r]];
+    const Triangle_key& t = ranked.triangles[ranked.by_order[r]];
     soup.push_back({t[0], t[1], t[2]});
     label[{pts[t[0]], pts[t[1]], pts[t[2]]}] = element_of[r];
   }
-  PolygonMesh result;
-  LOC::internal::add_chain_soup(pts, soup, false, result);
-  // into the caller's mesh, emptied without removing its property maps (the element map may be one)
-  using Face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
-  while(!faces(mesh).empty()) remove_face(*faces(mesh).begin(), mesh);
-  while(!edges(mesh).empty()) remove_edge(*edges(mesh).begin(), mesh);
-  while(!vertices(mesh).empty()) remove_vertex(*vertices(mesh).begin(), mesh);
-  std::vector<std::pair<Face, Face>> face_pairs;
-  copy_face_graph(result, mesh, parameters::face_to_face_output_iterator(std::back_inserter(face_pairs)));
   if constexpr(!is_default_parameter<NamedParameters, LOC::internal_np::face_element_map_t>::value) {
-    auto element_map = get_parameter(np, LOC::internal_np::face_element_map);
-    const auto vpm = get(vertex_point, result);
-    for(const auto& [from, to] : face_pairs) {
-      std::array<Point, 3> corners;
-      std::size_t k = 0;
-      for(auto v : vertices_around_face(halfedge(from, result), result)) corners[k++] = get(vpm, v);
-      std::sort(corners.begin(), corners.end());
-      put(element_map, to, label.at(corners));
-    }
+    const auto element_map = get_parameter(np, LOC::internal_np::face_element_map);
+    LOC::internal::mesh_with_elements(pts, soup, label, mesh, &element_map);
+  } else {
+    LOC::internal::mesh_with_elements(pts, soup, label, mesh, nullptr);
   }
   report.mesh_vertices = std::size_t(std::distance(vertices(mesh).begin(), vertices(mesh).end()));
   report.mesh_faces = std::size_t(std::distance(faces(mesh).begin(), faces(mesh).end()));
