@@ -325,9 +325,14 @@ std::vector<Chain<Field>> critical_basis(const Simplicial_complex& complex, int 
   const std::vector<std::uint32_t> rank = internal::ranks_of(order, m);
   const std::vector<char> in_b_k = internal::simplices_in(complex, k, relative);
   const std::vector<char> in_b_k1 = internal::simplices_in(complex, k + 1, relative);
-  // the cycles: kernel columns of V (all k-simplices are cycles when k = 0)
+  // The cycles: kernel columns of V (all k-simplices are cycles when k = 0). A cycle whose
+  // lowest simplex is the low of a reduced boundary is left out: for k >= 1 it is that
+  // boundary (the clearing of Cycle_basis_reduction), which reduces to zero; for k = 0 its
+  // vertex is not the lowest of its component, whose lowest vertex has the same minimal cycle.
+  // Only the essential cycles (as many as the Betti number) are then reduced, each in O(m).
   std::vector<Column> minimal; // minimal cycles, rows = ranks
   const internal::Column_reduction<Field> boundaries(internal::boundary_by_rank<Field>(complex, k, rank, in_b_k, in_b_k1), m, false);
+  auto is_boundary_low = [&](std::uint32_t s) { return boundaries.pivot(rank[s]) != boundaries.none; };
   auto add_minimal = [&](std::vector<typename Field::Value>& g) {
     boundaries.totally_reduce(g);
     Column c;
@@ -336,7 +341,7 @@ std::vector<Chain<Field>> critical_basis(const Simplicial_complex& complex, int 
   };
   if(k == 0) {
     for(std::uint32_t s = 0; s < m; ++s) {
-      if(in_b_k[s]) continue;
+      if(in_b_k[s] || is_boundary_low(s)) continue;
       std::vector<typename Field::Value> g(m, Field::zero());
       g[rank[s]] = Field::one();
       add_minimal(g);
@@ -345,7 +350,7 @@ std::vector<Chain<Field>> critical_basis(const Simplicial_complex& complex, int 
     const std::vector<char> in_b_km1 = internal::simplices_in(complex, k - 1, relative);
     const internal::Cycle_basis_reduction<Field> cycles(complex, k, order, in_b_k, in_b_km1, &boundaries);
     for(std::size_t p = 0; p < cycles.simplex_of_column.size(); ++p) {
-      if(!cycles.reduction->reduced(p).empty()) continue;
+      if(!cycles.reduction->reduced(p).empty() || is_boundary_low(cycles.simplex_of_column[p])) continue;
       std::vector<typename Field::Value> g(m, Field::zero());
       for(const auto& e : cycles.reduction->transformation(p)) g[rank[cycles.simplex_of_column[e.first]]] = e.second;
       add_minimal(g);
