@@ -325,8 +325,66 @@ void test_street()
   }
 }
 
+// The chains of many cycles made 64 at a time (bit i of each value for cycle i) are those that
+// lex_optimal_chain_with_boundary() makes for each cycle alone, absolute and relative to a set
+// of triangles; 70 cycles, so that the second group holds 6. Each cycle is the boundary of a
+// few random triangles, over Z2.
+void test_batched_chains()
+{
+  std::cout << "chains of 70 cycles in groups of 64 against one run per cycle" << std::endl;
+  using DT = CGAL::Delaunay_triangulation_3<Kernel>;
+  using Vertex_handle = DT::Vertex_handle;
+  using Cycle = std::vector<std::pair<Vertex_handle, Vertex_handle>>;
+  CGAL::Random rng(5);
+  std::vector<Point> points;
+  for(int i = 0; i < 1500; ++i) points.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
+  const DT dt(points.begin(), points.end());
+  std::vector<DT::Facet> facets(dt.finite_facets_begin(), dt.finite_facets_end());
+  using Key = std::array<Vertex_handle, 3>;
+  auto key = [](const DT::Facet& f) {
+    Key k{f.first->vertex((f.second + 1) & 3), f.first->vertex((f.second + 2) & 3), f.first->vertex((f.second + 3) & 3)};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::vector<Cycle> cycles;
+  for(int c = 0; c < 70; ++c) {
+    std::map<std::pair<Vertex_handle, Vertex_handle>, int> edges; // the Z2 boundary
+    for(int t = rng.get_int(1, 6); t > 0; --t) {
+      const Key k = key(facets[std::size_t(rng.get_int(0, int(facets.size())))]);
+      for(int j = 0; j < 3; ++j) edges[std::minmax(k[j], k[(j + 1) % 3])] ^= 1;
+    }
+    Cycle cycle;
+    for(const auto& [e, odd] : edges) if(odd) cycle.push_back(e);
+    if(!cycle.empty()) cycles.push_back(cycle);
+  }
+  assert(cycles.size() > 64);
+  std::vector<DT::Facet> b;
+  for(int i = 0; i < 200; ++i) b.push_back(facets[std::size_t(rng.get_int(0, int(facets.size())))]);
+  for(bool relative : {false, true}) {
+    const auto batched = relative ? LOC::internal::optimal_chains_with_boundaries(dt, cycles, LOC::parameters::relative_facets(b))
+                                  : LOC::internal::optimal_chains_with_boundaries(dt, cycles, CGAL::parameters::default_values());
+    assert(batched.size() == cycles.size());
+    std::size_t triangles = 0;
+    for(std::size_t c = 0; c < cycles.size(); ++c) {
+      std::vector<std::pair<DT::Facet, std::int64_t>> alone;
+      const auto z2 = LOC::Coefficient_field::Z2;
+      if(relative)
+        CGAL::lex_optimal_chain_with_boundary(dt, cycles[c], std::back_inserter(alone),
+                                              LOC::parameters::coefficient_field(z2, LOC::parameters::relative_facets(b)));
+      else CGAL::lex_optimal_chain_with_boundary(dt, cycles[c], std::back_inserter(alone), LOC::parameters::coefficient_field(z2));
+      std::set<Key> expected, got;
+      for(const auto& fk : alone) expected.insert(key(fk.first));
+      for(const auto& f : batched[c]) assert(got.insert(key(f)).second); // each triangle once
+      assert(!expected.empty() && got == expected);
+      triangles += got.size();
+    }
+    std::cout << "  " << (relative ? "relative: " : "absolute: ") << triangles << " triangles, the same" << std::endl;
+  }
+}
+
 int main()
 {
+  test_batched_chains();
   test_bad_input();
   test_dense_agreement();
   test_cube();

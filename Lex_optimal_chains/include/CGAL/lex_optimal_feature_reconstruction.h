@@ -319,18 +319,14 @@ lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
     std::sort(k.begin(), k.end());
     return k;
   };
+  // all the cycles' chains in runs of 64 (internal/Optimal_chain_3.h)
+  const auto facet_chains = relative
+    ? LOC::internal::optimal_chains_with_boundaries(dt, cycles, LOC::parameters::relative_facets(b.facets))
+    : LOC::internal::optimal_chains_with_boundaries(dt, cycles, parameters::default_values());
   std::vector<std::vector<Triangle_key>> chains;
-  for(const auto& cycle : cycles) {
-    std::vector<std::pair<typename DT::Facet, std::int64_t>> chain;
-    if(relative)
-      lex_optimal_chain_with_boundary(dt, cycle, std::back_inserter(chain),
-                                      LOC::parameters::coefficient_field(LOC::Coefficient_field::Z2,
-                                                                         LOC::parameters::relative_facets(b.facets)));
-    else
-      lex_optimal_chain_with_boundary(dt, cycle, std::back_inserter(chain),
-                                      LOC::parameters::coefficient_field(LOC::Coefficient_field::Z2));
+  for(const auto& facets : facet_chains) {
     std::vector<Triangle_key> keys;
-    for(const auto& fk : chain) keys.push_back(key_of(fk.first));
+    for(const auto& f : facets) keys.push_back(key_of(f));
     std::sort(keys.begin(), keys.end());
     chains.push_back(std::move(keys));
   }

@@ -8,7 +8,8 @@
 // group. `value[x]` is the value of the directed path from x to its parent, so the sum of
 // the values from x to its root is the value of the path from x to the root (a root has
 // value zero). Path halving adds up the values it shortcuts; union by rank negates the link
-// value when the link goes the other way. Defined for Z2_arithmetic and Integer_arithmetic.
+// value when the link goes the other way. Defined for Z2_arithmetic, Z2_word_arithmetic and
+// Integer_arithmetic.
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_arithmetic.h>
@@ -42,6 +43,21 @@ struct Augmented_node<Z2_arithmetic>
   std::uint32_t parent() const { return word & 0x7fffffffu; }
   std::uint8_t value() const { return std::uint8_t(word >> 31); }
   void set(std::uint32_t parent, std::uint8_t value) { word = parent | (std::uint32_t(value) << 31); }
+};
+
+template <>
+struct Augmented_node<Z2_word_arithmetic>
+{
+  std::uint64_t link_value;
+  std::uint32_t parent_index;
+  static constexpr std::uint32_t max_size = std::numeric_limits<std::uint32_t>::max();
+  std::uint32_t parent() const { return parent_index; }
+  std::uint64_t value() const { return link_value; }
+  void set(std::uint32_t parent, std::uint64_t value)
+  {
+    parent_index = parent;
+    link_value = value;
+  }
 };
 
 template <>

@@ -4,8 +4,9 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CHAIN_ARITHMETIC_H
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CHAIN_ARITHMETIC_H
 
-// The two coefficient groups of the chains, as policies with the same interface:
-// `Value`, `zero()`, `add(a, b)`, `negate(a)`, `from_integer(k)`, `to_integer(a)`.
+// The coefficient groups of the chains, as policies with the same interface:
+// `Value`, `has_signs` (false: a value and its opposite are equal), `zero()`, `add(a, b)`,
+// `negate(a)`, `from_integer(k)`, `to_integer(a)`.
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 
@@ -19,6 +20,7 @@ namespace internal {
 struct Z2_arithmetic
 {
   using Value = std::uint8_t;
+  static constexpr bool has_signs = false; // the orientation of a simplex is irrelevant
   static Value zero() { return 0; }
   static Value add(Value a, Value b) { return Value(a ^ b); }
   static Value negate(Value a) { return a; }
@@ -26,11 +28,27 @@ struct Z2_arithmetic
   static std::int64_t to_integer(Value a) { return a; }
 };
 
+// Z/2Z^64: 64 chains over Z/2Z at once, bit i of a value being the coefficient of chain i.
+// Every operation of the algorithms on chains is linear and made in the same order whatever the
+// coefficients, so one run with these values is 64 runs over Z/2Z: bit i of the result is the
+// result for bit i of the input. `to_integer()` gives the bits as they are (not a number).
+struct Z2_word_arithmetic
+{
+  using Value = std::uint64_t;
+  static constexpr bool has_signs = false;
+  static Value zero() { return 0; }
+  static Value add(Value a, Value b) { return a ^ b; }
+  static Value negate(Value a) { return a; }
+  static Value from_integer(std::int64_t k) { return Value(k); }
+  static std::int64_t to_integer(Value a) { return std::int64_t(a); }
+};
+
 // The integers, standing for Q (only additions and subtractions are made, so an integral
 // input stays integral); overflow is detected.
 struct Integer_arithmetic
 {
   using Value = std::int64_t;
+  static constexpr bool has_signs = true;
   static Value zero() { return 0; }
   static Value add(Value a, Value b)
   {

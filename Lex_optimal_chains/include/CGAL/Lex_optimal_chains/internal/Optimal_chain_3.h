@@ -16,6 +16,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <iostream>
@@ -50,7 +51,8 @@ oriented_facet(const Triangulation& dt, typename Triangulation::Vertex_handle a,
 
 // Writes the chain of `lexicographic_homologous_chain()` (record codes and coefficients) to
 // `out` as (facet, coefficient) with a positive coefficient: the facet is oriented outward of
-// the owner for a positive coefficient, of the other cell for a negative one.
+// the owner for a positive coefficient, of the other cell for a negative one (without signs:
+// outward of the owner, with the coefficient as it is).
 template <class Arithmetic, class Triangulation, class OutputIterator>
 void write_chain(const Triangulation& dt, const Handle_index_map<typename Triangulation::Cell>& cells,
                  const Dual_edge_records& chain, OutputIterator out, Open_surface_report& report)
@@ -65,8 +67,8 @@ void write_chain(const Triangulation& dt, const Handle_index_map<typename Triang
       container.iterator_to(*const_cast<typename Triangulation::Cell*>(cells.element(entry.owner >> 2)));
     const int j = int(entry.owner & 3);
     const std::int64_t k = Arithmetic::to_integer(chain_coefficient<Arithmetic>(entry));
-    if(k != 1 && k != -1) ++report.number_of_multiple_facets;
-    if(k > 0) *out++ = std::make_pair(Facet(owner, j), k);
+    if(Arithmetic::has_signs && k != 1 && k != -1) ++report.number_of_multiple_facets;
+    if(!Arithmetic::has_signs || k > 0) *out++ = std::make_pair(Facet(owner, j), k);
     else *out++ = std::make_pair(Facet(owner->neighbor(j), owner->neighbor(j)->index(owner)), -k);
   }
 }
@@ -178,6 +180,39 @@ void optimal_chain_with_boundary(const Triangulation& dt, const EdgeRange& cycle
     }, callback, progress_from, out, report);
 }
 
+// Algorithm 11 then Algorithm 10 over Z2 for each cycle of `cycles` (each given as
+// (source, target) vertex pairs), the cycles 64 at a time: in each group, bit i of every
+// value stands for cycle i (Z2_word_arithmetic), so that one run of the two algorithms makes
+// 64 chains, each the one that a run for its cycle alone makes. `np` as for
+// `lex_optimal_chain_with_boundary()` (its relative facets, threads and verbosity). Returns
+// the facets of each chain, in decreasing order.
+template <class Triangulation, class Cycle, class NamedParameters>
+std::vector<std::vector<typename Triangulation::Facet>>
+optimal_chains_with_boundaries(const Triangulation& dt, const std::vector<Cycle>& cycles, const NamedParameters& np)
+{
+  using Arithmetic = Z2_word_arithmetic;
+  using Representative = Representative_chain_3<Triangulation, Arithmetic>;
+  constexpr std::size_t group = 64;
+  std::vector<std::vector<typename Triangulation::Facet>> chains(cycles.size());
+  const std::function<bool(double)> no_callback;
+  for(std::size_t first = 0; first < cycles.size(); first += group) {
+    const std::size_t count = (std::min)(group, cycles.size() - first);
+    std::vector<typename Representative::Edge> edges;
+    for(std::size_t i = 0; i < count; ++i)
+      for(const auto& e : cycles[first + i]) edges.push_back({e.first, e.second, Arithmetic::Value(1) << i});
+    const Representative representative(dt, edges);
+    std::vector<std::pair<typename Triangulation::Facet, std::int64_t>> chain;
+    Open_surface_report report;
+    optimal_chain<Arithmetic>(dt, np, [&](const auto& add) {
+        for(const auto& t : representative.chain()) // no signs: the orientation does not matter
+          add(oriented_facet(dt, t.vertices[0], t.vertices[1], t.vertices[2]).first, Arithmetic::to_integer(t.coefficient));
+      }, no_callback, 0.0, std::back_inserter(chain), report);
+    for(const auto& [facet, bits] : chain)
+      for(std::size_t i = 0; i < count; ++i)
+        if(Arithmetic::Value(bits) >> i & 1) chains[first + i].push_back(facet);
+  }
+  return chains;
+}
 
 // The frame of the public functions on a triangulation: the callback, the checks, the timing,
 // and the choice of the coefficients; `run(arithmetic, callback, report)` does the work.
