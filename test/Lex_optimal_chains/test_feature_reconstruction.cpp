@@ -152,6 +152,18 @@ void test_dense_agreement()
   std::sort(features.begin(), features.end());
   features.erase(std::unique(features.begin(), features.end()), features.end());
   const LOC::internal::Feature_subcomplex_3<DT> b(dt, features, r.offset);
+  { // B's edges in the package's order on edges: that of the exact order with zero weights
+    const std::vector<double> zero(b.points.size(), 0.);
+    const auto expected = LOC::sort_simplices(b.complex, 1, LOC::Weighted_simplex_order<Point>(b.points, zero));
+    std::size_t ties = 0; // edges of the same length, ordered by their points
+    for(std::size_t i = 1; i < expected.size(); ++i) {
+      const auto& x = b.complex.simplex(1, expected[i - 1]);
+      const auto& y = b.complex.simplex(1, expected[i]);
+      ties += CGAL::squared_distance(b.points[x[0]], b.points[x[1]]) == CGAL::squared_distance(b.points[y[0]], b.points[y[1]]);
+    }
+    std::cout << "  " << expected.size() << " edges of B (" << ties << " ties) in the package's order" << std::endl;
+    assert(b.sorted_edges() == expected && ties > 0);
+  }
   const auto k = LOC::triangulation_complex_3(dt);
   std::map<DT::Vertex_handle, std::uint32_t> index;
   std::vector<Point> k_points;

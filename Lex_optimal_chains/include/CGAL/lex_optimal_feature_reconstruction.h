@@ -57,12 +57,24 @@ std::vector<Point> vcm_feature_points(const std::vector<Point>& points, double o
 // A triangle as the indices of its vertices in the sorted points, increasing.
 using Triangle_key = std::array<std::uint32_t, 3>;
 
-// The vertex of `dt` at each feature point (the nearest one for a point that is not a vertex).
+// The vertex of `dt` at each feature point (the nearest one for a point that is not a vertex,
+// searched from the last one found).
 template <class DT, class Point>
 std::vector<typename DT::Vertex_handle> feature_vertices(const DT& dt, const std::vector<Point>& features)
 {
-  std::vector<typename DT::Vertex_handle> result;
-  for(const Point& p : features) result.push_back(dt.nearest_vertex(p));
+  using Vertex_handle = typename DT::Vertex_handle;
+  std::vector<Vertex_handle> by_point;
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) by_point.push_back(v);
+  auto less = [](Vertex_handle a, Vertex_handle b) { return a->point() < b->point(); };
+  std::sort(by_point.begin(), by_point.end(), less);
+  std::vector<Vertex_handle> result;
+  typename DT::Cell_handle hint;
+  for(const Point& p : features) {
+    const auto it = std::lower_bound(by_point.begin(), by_point.end(), p, [](Vertex_handle v, const Point& q) { return v->point() < q; });
+    const Vertex_handle v = it != by_point.end() && (*it)->point() == p ? *it : dt.nearest_vertex(p, hint);
+    hint = v->cell();
+    result.push_back(v);
+  }
   std::sort(result.begin(), result.end());
   result.erase(std::unique(result.begin(), result.end()), result.end());
   return result;
