@@ -207,6 +207,27 @@ void test_dense_agreement()
     assert(dense_elements[e].count(t) == 1);
     for(std::size_t before = 0; before < e; ++before) assert(dense_elements[before].count(t) == 0);
   }
+  { // the function on the user's triangulation gives the same elements and mesh
+    Mesh from_dt;
+    auto from_dt_element = from_dt.add_property_map<Mesh::Face_index, std::size_t>("f:element", std::size_t(-1)).first;
+    const LOC::Feature_reconstruction_report r_dt = CGAL::lex_optimal_feature_reconstruction(
+      dt, from_dt, LOC::parameters::feature_points(edges, LOC::parameters::face_element_map(from_dt_element, LOC::parameters::relative_to_features(true))));
+    assert(r_dt.element_sizes == r.element_sizes && r_dt.number_of_input_points == r.number_of_input_points);
+    std::multiset<std::pair<std::array<Point, 3>, std::size_t>> a, b_faces;
+    for(auto f : mesh.faces()) {
+      std::array<Point, 3> t; int j = 0;
+      for(auto v : mesh.vertices_around_face(mesh.halfedge(f))) t[std::size_t(j++)] = mesh.point(v);
+      std::sort(t.begin(), t.end());
+      a.emplace(t, element[f]);
+    }
+    for(auto f : from_dt.faces()) {
+      std::array<Point, 3> t; int j = 0;
+      for(auto v : from_dt.vertices_around_face(from_dt.halfedge(f))) t[std::size_t(j++)] = from_dt.point(v);
+      std::sort(t.begin(), t.end());
+      b_faces.emplace(t, from_dt_element[f]);
+    }
+    assert(a == b_faces);
+  }
   std::cout << "  " << dense.size() << " elements of " << r.element_sizes[0] << ", ... triangles: the same as the dense ones ("
             << mesh.number_of_faces() << " faces)" << std::endl;
 }
@@ -230,6 +251,12 @@ void test_bad_input()
   std::vector<Point> flat;
   for(int i = 0; i < 50; ++i) flat.emplace_back(rng.get_double(), rng.get_double(), 0.);
   expect_error(Code::DEGENERATE_POINT_SET, [&] { CGAL::lex_optimal_feature_reconstruction(flat, mesh); });
+  const CGAL::Delaunay_triangulation_3<Kernel> flat_dt(flat.begin(), flat.end());
+  expect_error(Code::DEGENERATE_POINT_SET, [&] { CGAL::lex_optimal_feature_reconstruction(flat_dt, mesh); });
+  const CGAL::Delaunay_triangulation_3<Kernel> cube_dt(points.begin(), points.end());
+  expect_error(Code::INVALID_PARAMETER, [&] {
+    CGAL::lex_optimal_feature_reconstruction(cube_dt, mesh, LOC::parameters::feature_threshold(0.));
+  });
   expect_error(Code::INVALID_PARAMETER, [&] {
     CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_offset(-1.));
   });

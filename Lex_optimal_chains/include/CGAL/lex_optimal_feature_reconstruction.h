@@ -154,6 +154,137 @@ struct Ranked_chains
   }
 };
 
+// The named parameters of lex_optimal_feature_reconstruction(), checked, with their defaults
+// for the average spacing of the points.
+struct Feature_settings
+{
+  double offset, threshold, offset_radius, convolution_radius;
+  bool relative;
+  std::size_t drop;
+};
+
+template <class NamedParameters>
+Feature_settings feature_settings(const NamedParameters& np, double spacing)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto positive = [](double value, const char* name) {
+    if(!(value > 0) || !std::isfinite(value))
+      throw Input_error(Input_error_code::INVALID_PARAMETER,
+                        std::string("the ") + name + " must be positive and finite (it is " + std::to_string(value) + ")");
+    return value;
+  };
+  Feature_settings f;
+  f.offset = positive(choose_parameter(get_parameter(np, internal_np::feature_offset), 1.5 * spacing), "feature offset");
+  f.threshold = positive(choose_parameter(get_parameter(np, internal_np::feature_threshold), 0.16), "feature threshold");
+  f.offset_radius = positive(choose_parameter(get_parameter(np, internal_np::vcm_offset_radius), 6 * spacing), "VCM offset radius");
+  f.convolution_radius =
+    positive(choose_parameter(get_parameter(np, internal_np::vcm_convolution_radius), 3 * spacing), "VCM convolution radius");
+  f.relative = choose_parameter(get_parameter(np, internal_np::relative_to_features), false);
+  f.drop = choose_parameter(get_parameter(np, internal_np::drop_largest_elements), std::size_t(0));
+  return f;
+}
+
+// The stages after the triangulation, on the Delaunay triangulation `dt` of the points `pts`
+// (sorted and distinct: the triangles are keyed by indices into them): the feature set S, B
+// and its cycles, their chains, the critical basis and the mesh.
+template <class DT, class Point, class PolygonMesh, class NamedParameters>
+void reconstruct_with_features(const DT& dt, const std::vector<Point>& pts, const Feature_settings& settings,
+                               PolygonMesh& mesh, const NamedParameters& np, Feature_reconstruction_report& report,
+                               Stopwatch& watch)
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  std::vector<Point> features;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::feature_points_t>::value) {
+    for(const Point& p : get_parameter(np, internal_np::feature_points)) {
+      if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+        throw Input_error(Input_error_code::NON_FINITE_COORDINATE,
+                               "feature point " + std::to_string(features.size()) + " has a NaN or infinite coordinate");
+      features.push_back(p);
+    }
+  } else {
+    features = vcm_feature_points(pts, settings.offset_radius, settings.convolution_radius, settings.threshold);
+    report.feature_seconds = watch.lap();
+  }
+  const auto vertices_of_s = internal::feature_vertices(dt, features);
+  report.number_of_feature_points = vertices_of_s.size();
+
+  // B and its optimal 1-cycles
+  const internal::Feature_subcomplex_3<DT> b(dt, vertices_of_s, settings.offset);
+  report.subcomplex_vertices = b.vertices.size();
+  report.subcomplex_edges = b.number_of_edges;
+  report.subcomplex_triangles = b.facets.size();
+  const auto cycles = b.optimal_cycles();
+  report.number_of_cycles = cycles.size();
+  report.subcomplex_seconds = watch.lap();
+  if(cycles.empty())
+    throw Input_error(Input_error_code::EMPTY_RESULT,
+                           "the subcomplex around the " + std::to_string(vertices_of_s.size()) +
+                             " feature points has no cycle: no feature found, or an offset too small to link them");
+
+  // a basis of Z^min_2(K, B): the optimal 2-chain of each cycle, as triangle keys
+  auto key_of = [&](const typename DT::Facet& f) {
+    Triangle_key k;
+    for(int j = 0; j < 3; ++j)
+      k[j] = std::uint32_t(std::lower_bound(pts.begin(), pts.end(), f.first->vertex((f.second + 1 + j) & 3)->point()) - pts.begin());
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  // all the cycles' chains in runs of 64 (internal/Optimal_chain_3.h)
+  const auto facet_chains = settings.relative
+    ? internal::optimal_chains_with_boundaries(dt, cycles, parameters::relative_facets(b.facets))
+    : internal::optimal_chains_with_boundaries(dt, cycles, CGAL::parameters::default_values());
+  std::vector<std::vector<Triangle_key>> chains;
+  for(const auto& facets : facet_chains) {
+    std::vector<Triangle_key> keys;
+    for(const auto& f : facets) keys.push_back(key_of(f));
+    std::sort(keys.begin(), keys.end());
+    chains.push_back(std::move(keys));
+  }
+  report.chain_seconds = watch.lap();
+
+  // the triangles of the chains ranked in the order of the package; the critical basis
+  std::vector<Triangle_key> b_triangles;
+  for(const auto& f : b.facets) b_triangles.push_back(key_of(f));
+  std::sort(b_triangles.begin(), b_triangles.end());
+  internal::Ranked_chains<Point> ranked(pts, chains, b_triangles);
+  const internal::Z2_critical_basis basis = internal::z2_critical_basis(std::move(ranked.relative), ranked.triangles.size());
+  report.basis_seconds = watch.lap();
+
+  // the mesh: the elements but the largest ones, each face labelled by its first element
+  const std::size_t kept = basis.elements.size() > settings.drop ? basis.elements.size() - settings.drop : 0;
+  report.number_of_dropped_elements = basis.elements.size() - kept;
+  if(kept == 0)
+    throw Input_error(Input_error_code::EMPTY_RESULT, "every element of the critical basis is dropped");
+  std::vector<std::uint32_t> element_of(ranked.triangles.size(), std::uint32_t(-1));
+  for(std::size_t e = 0; e < basis.elements.size(); ++e) {
+    internal::Z2_chain whole;
+    for(std::uint32_t j : basis.sums_of[e]) whole = internal::z2_sum(whole, ranked.absolute[j]);
+    report.element_sizes.push_back(whole.size());
+    if(e >= kept) continue;
+    for(std::uint32_t r : whole)
+      if(element_of[r] == std::uint32_t(-1)) element_of[r] = std::uint32_t(e);
+  }
+  std::vector<std::array<std::uint32_t, 3>> soup;
+  std::map<std::array<Point, 3>, std::size_t> label;
+  for(std::uint32_t r = 0; r < ranked.by_order.size(); ++r) {
+    if(element_of[r] == std::uint32_t(-1)) continue;
+    const Triangle_key& t = ranked.triangles[ranked.by_order[r]];
+    soup.push_back({t[0], t[1], t[2]});
+    label[{pts[t[0]], pts[t[1]], pts[t[2]]}] = element_of[r];
+  }
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::face_element_map_t>::value) {
+    const auto element_map = get_parameter(np, internal_np::face_element_map);
+    internal::mesh_with_elements(pts, soup, label, mesh, &element_map);
+  } else {
+    internal::mesh_with_elements(pts, soup, label, mesh, nullptr);
+  }
+  report.mesh_vertices = std::size_t(std::distance(vertices(mesh).begin(), vertices(mesh).end()));
+  report.mesh_faces = std::size_t(std::distance(faces(mesh).begin(), faces(mesh).end()));
+  report.mesh_seconds = watch.lap();
+}
+
 } // namespace internal
 } // namespace Lex_optimal_chains
 
@@ -181,8 +312,8 @@ their Delaunay triangulation \f$K\f$ around sharp features (thesis section 4.8.3
    their triangles), not those with the most triangles.
 
 The mesh is the union of the elements of the critical basis but the `drop_largest_elements`
-largest ones (dropping the largest elements opens the holes that they close, such as
-occlusions); each face is labelled with the index of the first element that holds it. The
+largest ones (in the thesis, dropping the largest elements opens the holes that they close,
+such as occlusions; the manual's limitations say where this was not reproduced); each face is labelled with the index of the first element that holds it. The
 coefficients are in \f$\mathbb{Z}_2\f$; the faces are oriented by a traversal, and
 non-manifold edges and vertices are split as in the other reconstructions.
 
@@ -259,130 +390,59 @@ lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::is_default_parameter;
   namespace LOC = Lex_optimal_chains;
   using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
   using Point = typename boost::property_traits<Point_map>::value_type;
-  using Kernel = typename Kernel_traits<Point>::Kernel;
-  using DT = Delaunay_triangulation_3<Kernel>;
-  using LOC::internal::Triangle_key;
+  using DT = Delaunay_triangulation_3<typename Kernel_traits<Point>::Kernel>;
   LOC::Feature_reconstruction_report report;
   LOC::internal::Stopwatch total, watch;
-
   std::vector<Point> pts = LOC::internal::finite_points<Point>(points, choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map)));
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   report.number_of_input_points = pts.size();
   if(pts.size() < 4) throw LOC::Input_error(LOC::Input_error_code::TOO_FEW_POINTS, "fewer than 4 distinct points");
   report.average_spacing = compute_average_spacing<Sequential_tag>(pts, 6);
-  auto positive = [](double value, const char* name) {
-    if(!(value > 0) || !std::isfinite(value))
-      throw LOC::Input_error(LOC::Input_error_code::INVALID_PARAMETER,
-                             std::string("the ") + name + " must be positive and finite (it is " + std::to_string(value) + ")");
-    return value;
-  };
-  const double s = report.average_spacing;
-  const double epsilon = positive(choose_parameter(get_parameter(np, LOC::internal_np::feature_offset), 1.5 * s), "feature offset");
-  const double threshold = positive(choose_parameter(get_parameter(np, LOC::internal_np::feature_threshold), 0.16), "feature threshold");
-  const double offset_radius = positive(choose_parameter(get_parameter(np, LOC::internal_np::vcm_offset_radius), 6 * s), "VCM offset radius");
-  const double convolution_radius =
-    positive(choose_parameter(get_parameter(np, LOC::internal_np::vcm_convolution_radius), 3 * s), "VCM convolution radius");
-  const bool relative = choose_parameter(get_parameter(np, LOC::internal_np::relative_to_features), false);
-  const std::size_t drop = choose_parameter(get_parameter(np, LOC::internal_np::drop_largest_elements), std::size_t(0));
-  report.offset = epsilon;
-
-  DT dt(pts.begin(), pts.end());
+  const LOC::internal::Feature_settings settings = LOC::internal::feature_settings(np, report.average_spacing);
+  report.offset = settings.offset;
+  const DT dt(pts.begin(), pts.end());
   LOC::internal::check_dimension(dt);
   report.delaunay_seconds = watch.lap();
+  LOC::internal::reconstruct_with_features(dt, pts, settings, mesh, np, report, watch);
+  report.total_seconds = total.lap();
+  return report;
+}
 
-  std::vector<Point> features;
-  if constexpr(!is_default_parameter<NamedParameters, LOC::internal_np::feature_points_t>::value) {
-    for(const Point& p : get_parameter(np, LOC::internal_np::feature_points)) {
-      if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-        throw LOC::Input_error(LOC::Input_error_code::NON_FINITE_COORDINATE,
-                               "feature point " + std::to_string(features.size()) + " has a NaN or infinite coordinate");
-      features.push_back(p);
-    }
-  } else {
-    features = LOC::internal::vcm_feature_points(pts, offset_radius, convolution_radius, threshold);
-    report.feature_seconds = watch.lap();
-  }
-  const auto feature_vertices = LOC::internal::feature_vertices(dt, features);
-  report.number_of_feature_points = feature_vertices.size();
+/*!
+\ingroup PkgLexOptimalChainsRef
 
-  // B and its optimal 1-cycles
-  const LOC::internal::Feature_subcomplex_3<DT> b(dt, feature_vertices, epsilon);
-  report.subcomplex_vertices = b.vertices.size();
-  report.subcomplex_edges = b.number_of_edges;
-  report.subcomplex_triangles = b.facets.size();
-  const auto cycles = b.optimal_cycles();
-  report.number_of_cycles = cycles.size();
-  report.subcomplex_seconds = watch.lap();
-  if(cycles.empty())
-    throw LOC::Input_error(LOC::Input_error_code::EMPTY_RESULT,
-                           "the subcomplex around the " + std::to_string(feature_vertices.size()) +
-                             " feature points has no cycle: no feature found, or an offset too small to link them");
+The same reconstruction on the Delaunay triangulation `dt` of the points, which is not
+modified: its finite vertices are the points (the feature points are taken at the nearest
+vertex), and its triangles are those of the chains and of the mesh. `point_map` is not used;
+the other named parameters are those of the function on points. The report's Delaunay time
+is 0.
 
-  // a basis of Z^min_2(K, B): the optimal 2-chain of each cycle, as triangle keys
-  auto key_of = [&](const typename DT::Facet& f) {
-    Triangle_key k;
-    for(int j = 0; j < 3; ++j)
-      k[j] = std::uint32_t(std::lower_bound(pts.begin(), pts.end(), f.first->vertex((f.second + 1 + j) & 3)->point()) - pts.begin());
-    std::sort(k.begin(), k.end());
-    return k;
-  };
-  // all the cycles' chains in runs of 64 (internal/Optimal_chain_3.h)
-  const auto facet_chains = relative
-    ? LOC::internal::optimal_chains_with_boundaries(dt, cycles, LOC::parameters::relative_facets(b.facets))
-    : LOC::internal::optimal_chains_with_boundaries(dt, cycles, parameters::default_values());
-  std::vector<std::vector<Triangle_key>> chains;
-  for(const auto& facets : facet_chains) {
-    std::vector<Triangle_key> keys;
-    for(const auto& f : facets) keys.push_back(key_of(f));
-    std::sort(keys.begin(), keys.end());
-    chains.push_back(std::move(keys));
-  }
-  report.chain_seconds = watch.lap();
-
-  // the triangles of the chains ranked in the order of the package; the critical basis
-  std::vector<Triangle_key> b_triangles;
-  for(const auto& f : b.facets) b_triangles.push_back(key_of(f));
-  std::sort(b_triangles.begin(), b_triangles.end());
-  LOC::internal::Ranked_chains<Point> ranked(pts, chains, b_triangles);
-  const LOC::internal::Z2_critical_basis basis = LOC::internal::z2_critical_basis(std::move(ranked.relative), ranked.triangles.size());
-  report.basis_seconds = watch.lap();
-
-  // the mesh: the elements but the largest ones, each face labelled by its first element
-  const std::size_t kept = basis.elements.size() > drop ? basis.elements.size() - drop : 0;
-  report.number_of_dropped_elements = basis.elements.size() - kept;
-  if(kept == 0)
-    throw LOC::Input_error(LOC::Input_error_code::EMPTY_RESULT, "every element of the critical basis is dropped");
-  std::vector<std::uint32_t> element_of(ranked.triangles.size(), std::uint32_t(-1));
-  for(std::size_t e = 0; e < basis.elements.size(); ++e) {
-    LOC::internal::Z2_chain whole;
-    for(std::uint32_t j : basis.sums_of[e]) whole = LOC::internal::z2_sum(whole, ranked.absolute[j]);
-    report.element_sizes.push_back(whole.size());
-    if(e >= kept) continue;
-    for(std::uint32_t r : whole)
-      if(element_of[r] == std::uint32_t(-1)) element_of[r] = std::uint32_t(e);
-  }
-  std::vector<std::array<std::uint32_t, 3>> soup;
-  std::map<std::array<Point, 3>, std::size_t> label;
-  for(std::uint32_t r = 0; r < ranked.by_order.size(); ++r) {
-    if(element_of[r] == std::uint32_t(-1)) continue;
-    const Triangle_key& t = ranked.triangles[ranked.by_order[r]];
-    soup.push_back({t[0], t[1], t[2]});
-    label[{pts[t[0]], pts[t[1]], pts[t[2]]}] = element_of[r];
-  }
-  if constexpr(!is_default_parameter<NamedParameters, LOC::internal_np::face_element_map_t>::value) {
-    const auto element_map = get_parameter(np, LOC::internal_np::face_element_map);
-    LOC::internal::mesh_with_elements(pts, soup, label, mesh, &element_map);
-  } else {
-    LOC::internal::mesh_with_elements(pts, soup, label, mesh, nullptr);
-  }
-  report.mesh_vertices = std::size_t(std::distance(vertices(mesh).begin(), vertices(mesh).end()));
-  report.mesh_faces = std::size_t(std::distance(faces(mesh).begin(), faces(mesh).end()));
-  report.mesh_seconds = watch.lap();
+\throws Lex_optimal_chains::Input_error with code `TOO_FEW_POINTS` or `DEGENERATE_POINT_SET`
+for a triangulation of dimension below 3, and the other errors of the function on points.
+`mesh` is then unchanged.
+*/
+template <class Gt, class Tds, class Lds, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+Lex_optimal_chains::Feature_reconstruction_report
+lex_optimal_feature_reconstruction(const Delaunay_triangulation_3<Gt, Tds, Lds>& dt, PolygonMesh& mesh,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  namespace LOC = Lex_optimal_chains;
+  LOC::Feature_reconstruction_report report;
+  LOC::internal::Stopwatch total, watch;
+  LOC::internal::check_dimension(dt);
+  std::vector<typename Gt::Point_3> pts;
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) pts.push_back(v->point());
+  std::sort(pts.begin(), pts.end());
+  report.number_of_input_points = pts.size();
+  report.average_spacing = compute_average_spacing<Sequential_tag>(pts, 6);
+  const LOC::internal::Feature_settings settings = LOC::internal::feature_settings(np, report.average_spacing);
+  report.offset = settings.offset;
+  watch.lap();
+  LOC::internal::reconstruct_with_features(dt, pts, settings, mesh, np, report, watch);
   report.total_seconds = total.lap();
   return report;
 }
