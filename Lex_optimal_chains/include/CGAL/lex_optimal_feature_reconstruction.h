@@ -300,7 +300,7 @@ their Delaunay triangulation \f$K\f$ around sharp features (thesis section 4.8.3
    \f$\epsilon\f$ (`feature_offset`) of \f$S\f$, and the edges and triangles of \f$K\f$ on
    them whose edges are at most \f$2\epsilon\f$ long;
 3. the optimal 1-cycles of \f$B\f$ whose classes form a basis of \f$H_1(B)\f$ (the critical
-   basis of \f$Z^{\min}_1(B)\f$, by the dense reduction of \f$B\f$), \f$\beta\f$ of them;
+   basis of \f$Z^{\min}_1(B)\f$, by the reduction of \f$B\f$ with sparse columns), \f$\beta\f$ of them;
 4. for each, a representative 2-chain of \f$K\f$ bounded by it (Algorithm 11) made optimal
    (Algorithm 10): the smallest chain bounded by the cycle (absolute, the thesis's choice for
    its Fig. 4.31), or, with `relative_to_features`, the smallest chain of its class relative to

@@ -309,9 +309,11 @@ greedily, each \f$b_{i+1}\f$ the smallest element outside the span of the previo
 with coefficient 1 on its largest simplex \f$\mathrm{crit}(b_{i+1})\f$. It verifies
 \f$b_j(\mathrm{crit}(b_i)) = \delta_{ij}\f$ (Lemma 4.50).
 
-Computed as in Observation 4.54: a basis of the `k`-cycles (Algorithm 4), each made minimal in
-its class (Algorithm 3); the matrix of these is reduced, its columns normalized and sorted
-lexicographically, and each one totally reduced by the previous ones.
+Computed as in Observation 4.54: a basis of the `k`-cycles (Algorithm 4), of which the
+essential ones (their lowest simplex is not the low of a reduced boundary; the others add
+nothing to the span) are made minimal in their classes (Algorithm 3); the matrix of these is
+reduced, its columns normalized and sorted lexicographically, and each one totally reduced by
+the previous ones.
 
 \tparam Field `Z2_field`, `Zp_field<p>` or `Q_field`
 \returns the basis, in increasing order; its size is the `k`-th Betti number of \f$(K,B)\f$.
