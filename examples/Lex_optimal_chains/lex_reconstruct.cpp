@@ -12,7 +12,7 @@
 //                   [--keep-non-manifold] [--threads N] [--ascii] [--json]
 //   mpirun -np K lex_reconstruct_mpi tiles ...   (the same, the tiles dealt out to K ranks)
 //   lex_reconstruct features INPUT OUTPUT [--threshold V] [--offset E] [--drop-largest K]
-//                   [--relative] [--ascii] [--json]
+//                   [--borders] [--relative] [--ascii] [--json]
 //
 // INPUT: points as XYZ, PLY, OFF or uncompressed LAS (1.0 to 1.4; --classes keeps the points of
 // these classifications). OUTPUT: a mesh as OFF, PLY (binary unless --ascii) or
@@ -392,7 +392,7 @@ struct Features_options
 {
   double threshold = 0.16, offset = 0;
   std::size_t drop_largest = 0;
-  bool relative = false;
+  bool relative = false, borders = false;
 };
 
 static int run_features(const std::string& input, const std::string& output, const Features_options& o,
@@ -403,9 +403,10 @@ static int run_features(const std::string& input, const std::string& output, con
   Mesh mesh;
   auto element = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:element", std::size_t(0)).first;
   const auto np = LOC::parameters::feature_threshold(o.threshold,
+                  LOC::parameters::border_features(o.borders,
                   LOC::parameters::relative_to_features(o.relative,
                   LOC::parameters::drop_largest_elements(o.drop_largest,
-                  LOC::parameters::face_element_map(element))));
+                  LOC::parameters::face_element_map(element)))));
   const LOC::Feature_reconstruction_report r =
     o.offset > 0 ? CGAL::lex_optimal_feature_reconstruction(points, mesh, LOC::parameters::feature_offset(o.offset, np))
                  : CGAL::lex_optimal_feature_reconstruction(points, mesh, np);
@@ -421,6 +422,7 @@ static int run_features(const std::string& input, const std::string& output, con
     j["output"] = output;
     j["points"] = r.number_of_input_points;
     j["feature_points"] = r.number_of_feature_points;
+    j["border_points"] = r.number_of_border_points;
     j["subcomplex_simplices"] = r.subcomplex_vertices + r.subcomplex_edges + r.subcomplex_triangles;
     j["subcomplex_vertices"] = r.subcomplex_vertices;
     j["subcomplex_edges"] = r.subcomplex_edges;
@@ -802,6 +804,7 @@ int main(int argc, char** argv)
     ->check(positive_number);
   features->add_option("--drop-largest", features_options.drop_largest, "leave the K largest elements out (opens occlusion holes)");
   features->add_flag("--relative", features_options.relative, "optimal chains relative to the subcomplex around the features");
+  features->add_flag("--borders", features_options.borders, "add the rims of the scan and of its holes to the features");
   features->add_flag("--ascii", options.ascii, "write a .ply mesh as text, without the elements (binary by default)");
   features->add_flag("--json", options.json, "print one JSON line of statistics on stdout");
 

@@ -2,7 +2,9 @@
 // 12 edges are the features (given, then estimated by the VCM), the subcomplex around the
 // edges has beta = 12 - 8 + 1 = 5 independent cycles, and the critical basis is made of 5
 // elements, each a face of the cube: one face is missing (the thesis's Fig. 4.30); dropping
-// the largest element leaves 4 faces; bad input gives its reason and leaves the mesh as it is.
+// the largest element leaves 4 faces; on a synthetic street with the shadows of a scanner, the
+// borders of the scan in the feature set make each shadow an element among the largest, and
+// dropping them opens the shadows; bad input gives its reason and leaves the mesh as it is.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
@@ -362,6 +364,41 @@ void test_street()
     std::cout << "  box " << i << ": " << own << " elements of its own" << std::endl;
     assert(own > 0);
   }
+  // With the borders of the scan in the feature set, each shadow's rim is a cycle of B and the
+  // shadow's filling an element: the three largest, so that dropping them opens the shadows
+  // (thesis Fig. 4.31) and leaves the ground.
+  std::cout << "synthetic street, features by the VCM and the borders" << std::endl;
+  auto shadow_faces = [&](const Mesh& m, const Mesh::Property_map<Mesh::Face_index, std::size_t>* el, std::map<std::size_t, std::size_t>* by) {
+    std::size_t shadow = 0, ground = 0;
+    for(auto f : m.faces()) {
+      std::vector<Point> c;
+      for(auto v : m.vertices_around_face(m.halfedge(f))) c.push_back(m.point(v));
+      if(c[0].z() != 0 || c[1].z() != 0 || c[2].z() != 0) continue;
+      const double cx = (c[0].x() + c[1].x() + c[2].x()) / 3, cy = (c[0].y() + c[1].y() + c[2].y()) / 3;
+      if(in_shadow(cx, cy)) { ++shadow; if(by) ++(*by)[(*el)[f]]; }
+      else if(!in_box(cx, cy)) ++ground;
+    }
+    return std::make_pair(shadow, ground);
+  };
+  Mesh with_borders;
+  auto border_element = with_borders.add_property_map<Mesh::Face_index, std::size_t>("f:element", std::size_t(-1)).first;
+  const auto borders_np = LOC::parameters::border_features(true, LOC::parameters::feature_threshold(0.2, LOC::parameters::feature_offset(0.2)));
+  const LOC::Feature_reconstruction_report rb =
+    CGAL::lex_optimal_feature_reconstruction(points, with_borders, LOC::parameters::face_element_map(border_element, borders_np));
+  std::map<std::size_t, std::size_t> shadow_elements;
+  const auto [shadows, ground_faces] = shadow_faces(with_borders, &border_element, &shadow_elements);
+  std::cout << "  " << rb.number_of_border_points << " border points, beta " << rb.number_of_cycles << "; shadow faces by element:";
+  for(const auto& [e, n] : shadow_elements) std::cout << " " << e << " (" << n << ")";
+  std::cout << std::endl;
+  const std::size_t m = rb.element_sizes.size();
+  for(std::size_t e = m - 3; e < m; ++e) assert(shadow_elements[e] >= 30); // each shadow, in the three largest
+  assert(shadows <= shadow_elements[m - 1] + shadow_elements[m - 2] + shadow_elements[m - 3] + 2);
+  Mesh opened;
+  CGAL::lex_optimal_feature_reconstruction(points, opened, LOC::parameters::drop_largest_elements(3, borders_np));
+  const auto [open_shadows, open_ground] = shadow_faces(opened, nullptr, nullptr);
+  std::cout << "  the 3 largest dropped: " << open_shadows << " of " << shadows << " shadow faces left, " << open_ground << " of "
+            << ground_faces << " ground faces" << std::endl;
+  assert(open_shadows <= 2 && double(open_ground) >= 0.98 * double(ground_faces)); // the rims go with the shadows
 }
 
 // The chains of many cycles made 64 at a time (bit i of each value for cycle i) are those that
@@ -421,8 +458,38 @@ void test_batched_chains()
   }
 }
 
+// The border points of a sampled square are its outer ring, and an evenly sampled sphere has
+// none.
+void test_border_points()
+{
+  std::cout << "border points of a square and of a sphere" << std::endl;
+  CGAL::Random rng(7);
+  std::vector<Point> square, sphere;
+  const double step = 0.25;
+  for(int i = 0; i <= 40; ++i)
+    for(int j = 0; j <= 40; ++j)
+      square.emplace_back(i * step + rng.get_double(-0.05, 0.05), j * step + rng.get_double(-0.05, 0.05), rng.get_double(-0.01, 0.01));
+  std::sort(square.begin(), square.end());
+  const auto borders = LOC::internal::border_points(square, LOC::internal::border_neighbours, LOC::internal::border_gap);
+  std::size_t ring = 0;
+  for(const Point& p : square) {
+    const double d = std::min({p.x(), p.y(), 10 - p.x(), 10 - p.y()}); // to the square's border
+    const bool border = std::binary_search(borders.begin(), borders.end(), p);
+    if(d < 0.1) { ++ring; assert(border); }  // the outer ring: all of it
+    if(d > 2.5 * step) assert(!border);     // three rows in: none
+  }
+  std::cout << "  " << borders.size() << " border points, the " << ring << " of the outer ring among them" << std::endl;
+  assert(ring == 160);
+  for(int i = 0; i < 3000; ++i) { // a Fibonacci sphere: even sampling, no hole
+    const double z = 1 - (2 * i + 1) / 3000., t = i * CGAL_PI * (3 - std::sqrt(5.)), r = std::sqrt(1 - z * z);
+    sphere.emplace_back(r * std::cos(t), r * std::sin(t), z);
+  }
+  assert(LOC::internal::border_points(sphere, LOC::internal::border_neighbours, LOC::internal::border_gap).empty());
+}
+
 int main()
 {
+  test_border_points();
   test_batched_chains();
   test_bad_input();
   test_dense_agreement();

@@ -11,6 +11,7 @@
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/Simplex_orders.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
+#include <CGAL/Lex_optimal_chains/internal/Border_points_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Feature_subcomplex_3.h>
@@ -154,12 +155,19 @@ struct Ranked_chains
   }
 };
 
+// The border points of `border_features`: the largest angular gap between a point's 12
+// nearest neighbours above 75 degrees. A straight border leaves a gap of about 180 degrees,
+// the corner of a rectangular hole about 90; the neighbours of an inner point leave less than
+// about 60.
+constexpr std::size_t border_neighbours = 12;
+constexpr double border_gap = 75 * CGAL_PI / 180;
+
 // The named parameters of lex_optimal_feature_reconstruction(), checked, with their defaults
 // for the average spacing of the points.
 struct Feature_settings
 {
   double offset, threshold, offset_radius, convolution_radius;
-  bool relative;
+  bool relative, borders;
   std::size_t drop;
 };
 
@@ -181,6 +189,7 @@ Feature_settings feature_settings(const NamedParameters& np, double spacing)
   f.convolution_radius =
     positive(choose_parameter(get_parameter(np, internal_np::vcm_convolution_radius), 3 * spacing), "VCM convolution radius");
   f.relative = choose_parameter(get_parameter(np, internal_np::relative_to_features), false);
+  f.borders = choose_parameter(get_parameter(np, internal_np::border_features), false);
   f.drop = choose_parameter(get_parameter(np, internal_np::drop_largest_elements), std::size_t(0));
   return f;
 }
@@ -205,8 +214,13 @@ void reconstruct_with_features(const DT& dt, const std::vector<Point>& pts, cons
     }
   } else {
     features = vcm_feature_points(pts, settings.offset_radius, settings.convolution_radius, settings.threshold);
-    report.feature_seconds = watch.lap();
   }
+  if(settings.borders) { // the rims of the scan and of its occlusion holes
+    const std::vector<Point> borders = border_points(pts, border_neighbours, border_gap);
+    report.number_of_border_points = borders.size();
+    features.insert(features.end(), borders.begin(), borders.end());
+  }
+  report.feature_seconds = watch.lap();
   const auto vertices_of_s = internal::feature_vertices(dt, features);
   report.number_of_feature_points = vertices_of_s.size();
 
@@ -349,6 +363,17 @@ non-manifold edges and vertices are split as in the other reconstructions.
     \cgalParamDescription{the convolution radius of `CGAL::compute_vcm()`}
     \cgalParamType{`double`}
     \cgalParamDefault{3 times the average spacing of the points}
+  \cgalParamNEnd
+  \cgalParamNBegin{border_features}
+    \cgalParamDescription{adds to \f$S\f$ the points on the border of the sampled surface: the
+                          rim of the scan and of its holes (occlusions), where the VCM marks
+                          few points. A point is on the border when its 12 nearest neighbours,
+                          projected on its tangent plane (by their covariance), leave an
+                          angular gap of more than 75 degrees around it. With the borders in
+                          \f$S\f$, a hole's rim is a cycle of \f$B\f$ and the hole's filling
+                          one element, among the largest}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{feature_offset}
     \cgalParamDescription{the offset \f$\epsilon\f$ of \f$S\f$ that bounds \f$B\f$}

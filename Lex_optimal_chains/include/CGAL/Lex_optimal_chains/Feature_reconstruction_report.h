@@ -20,6 +20,7 @@ struct Feature_reconstruction_report
 {
   std::size_t number_of_input_points = 0;   ///< distinct input points (vertices of the triangulation)
   std::size_t number_of_feature_points = 0; ///< points of the feature set \f$S\f$
+  std::size_t number_of_border_points = 0;  ///< points on the border of the sampled surface, with `border_features`
   std::size_t subcomplex_vertices = 0;      ///< vertices of the subcomplex \f$B\f$
   std::size_t subcomplex_edges = 0;         ///< edges of \f$B\f$
   std::size_t subcomplex_triangles = 0;     ///< triangles of \f$B\f$
@@ -31,7 +32,7 @@ struct Feature_reconstruction_report
   double average_spacing = 0;               ///< mean distance of a point to its 6 nearest neighbours
   double offset = 0;                        ///< the offset \f$\epsilon\f$ used
   double delaunay_seconds = 0;              ///< the triangulation
-  double feature_seconds = 0;               ///< the feature estimate (VCM), when it is not given
+  double feature_seconds = 0;               ///< the feature estimate (VCM, when the features are not given, and the border points)
   double subcomplex_seconds = 0;            ///< \f$B\f$ and its optimal 1-cycles
   double chain_seconds = 0;                 ///< the representative and optimal 2-chains (Algorithms 11 and 10)
   double basis_seconds = 0;                 ///< the critical basis (Observation 4.54)

@@ -38,6 +38,7 @@ enum vcm_convolution_radius_t { vcm_convolution_radius };
 enum feature_offset_t { feature_offset };
 enum relative_to_features_t { relative_to_features };
 enum drop_largest_elements_t { drop_largest_elements };
+enum border_features_t { border_features };
 enum face_element_map_t { face_element_map };
 
 } // namespace internal_np
@@ -107,6 +108,8 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(feature_offset)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(relative_to_features)
 /// The number of largest elements of the critical basis that `lex_optimal_feature_reconstruction()` leaves out.
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(drop_largest_elements)
+/// Adds the points on the border of the sampled surface to the feature set of `lex_optimal_feature_reconstruction()`.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(border_features)
 /// Receives the element of the critical basis of each face of `lex_optimal_feature_reconstruction()`.
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(face_element_map)
 
