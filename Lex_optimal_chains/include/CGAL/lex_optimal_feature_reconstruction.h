@@ -326,8 +326,8 @@ their Delaunay triangulation \f$K\f$ around sharp features (thesis section 4.8.3
    their triangles), not those with the most triangles.
 
 The mesh is the union of the elements of the critical basis but the `drop_largest_elements`
-largest ones (in the thesis, dropping the largest elements opens the holes that they close,
-such as occlusions; the manual's limitations say where this was not reproduced); each face is labelled with the index of the first element that holds it. The
+largest ones (dropping the largest elements opens the holes that they close, such as
+occlusions, when the holes' rims are features: see `border_features`); each face is labelled with the index of the first element that holds it. The
 coefficients are in \f$\mathbb{Z}_2\f$; the faces are oriented by a traversal, and
 non-manifold edges and vertices are split as in the other reconstructions.
 
