@@ -371,7 +371,8 @@ non-manifold edges and vertices are split as in the other reconstructions.
                           projected on its tangent plane (by their covariance), leave an
                           angular gap of more than 75 degrees around it. With the borders in
                           \f$S\f$, a hole's rim is a cycle of \f$B\f$ and the hole's filling
-                          one element, among the largest}
+                          one element, among the largest. Meant for evenly sampled
+                          surfaces: scan lines leave gaps too (the manual gives figures)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
