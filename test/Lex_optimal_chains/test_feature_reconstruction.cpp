@@ -114,6 +114,14 @@ void test_cube()
   LOC::Feature_reconstruction_report r = CGAL::lex_optimal_feature_reconstruction(
     points, mesh, LOC::parameters::feature_points(edges, LOC::parameters::face_element_map(element)));
   check_cube("given edges", mesh, element, r, 5);
+  { // the feature points moved off the vertices by far less than the spacing: the same vertices
+    // (the nearest ones), the same elements
+    std::vector<Point> moved;
+    for(const Point& p : edges) moved.emplace_back(p.x() + rng.get_double(-1e-4, 1e-4), p.y() + rng.get_double(-1e-4, 1e-4), p.z());
+    Mesh moved_mesh;
+    const auto moved_r = CGAL::lex_optimal_feature_reconstruction(points, moved_mesh, LOC::parameters::feature_points(moved));
+    assert(moved_r.number_of_feature_points == r.number_of_feature_points && moved_r.element_sizes == r.element_sizes);
+  }
   // the largest element dropped: 4 faces
   r = CGAL::lex_optimal_feature_reconstruction(
     points, mesh, LOC::parameters::feature_points(edges, LOC::parameters::face_element_map(element, LOC::parameters::drop_largest_elements(1))));
@@ -209,11 +217,15 @@ void test_dense_agreement()
     assert(dense_elements[e].count(t) == 1);
     for(std::size_t before = 0; before < e; ++before) assert(dense_elements[before].count(t) == 0);
   }
-  { // the function on the user's triangulation gives the same elements and mesh
+  { // the function on the user's triangulation, made from the points in another order, gives
+    // the same elements and mesh
+    std::vector<Point> shuffled = points;
+    CGAL::cpp98::random_shuffle(shuffled.begin(), shuffled.end(), rng);
+    const DT user_dt(shuffled.begin(), shuffled.end());
     Mesh from_dt;
     auto from_dt_element = from_dt.add_property_map<Mesh::Face_index, std::size_t>("f:element", std::size_t(-1)).first;
     const LOC::Feature_reconstruction_report r_dt = CGAL::lex_optimal_feature_reconstruction(
-      dt, from_dt, LOC::parameters::feature_points(edges, LOC::parameters::face_element_map(from_dt_element, LOC::parameters::relative_to_features(true))));
+      user_dt, from_dt, LOC::parameters::feature_points(edges, LOC::parameters::face_element_map(from_dt_element, LOC::parameters::relative_to_features(true))));
     assert(r_dt.element_sizes == r.element_sizes && r_dt.number_of_input_points == r.number_of_input_points);
     std::multiset<std::pair<std::array<Point, 3>, std::size_t>> a, b_faces;
     for(auto f : mesh.faces()) {
@@ -403,11 +415,11 @@ void test_street()
 
 // The chains of many cycles made 64 at a time (bit i of each value for cycle i) are those that
 // lex_optimal_chain_with_boundary() makes for each cycle alone, absolute and relative to a set
-// of triangles; 70 cycles, so that the second group holds 6. Each cycle is the boundary of a
-// few random triangles, over Z2.
+// of triangles; more than 64 cycles, so that there are two groups. Each cycle is the boundary of a
+// few random triangles, over Z2, or the sum of two of them.
 void test_batched_chains()
 {
-  std::cout << "chains of 70 cycles in groups of 64 against one run per cycle" << std::endl;
+  std::cout << "chains of up to 75 cycles (70 random ones, 5 sums of two) in groups of 64 against one run per cycle" << std::endl;
   using DT = CGAL::Delaunay_triangulation_3<Kernel>;
   using Vertex_handle = DT::Vertex_handle;
   using Cycle = std::vector<std::pair<Vertex_handle, Vertex_handle>>;
@@ -432,6 +444,15 @@ void test_batched_chains()
     Cycle cycle;
     for(const auto& [e, odd] : edges) if(odd) cycle.push_back(e);
     if(!cycle.empty()) cycles.push_back(cycle);
+  }
+  // and sums of two of them in the same group: cycles that share edges, linearly dependent
+  for(std::size_t c = 0; c + 1 < 10; c += 2) {
+    std::map<std::pair<Vertex_handle, Vertex_handle>, int> edges;
+    for(const auto* cycle : {&cycles[c], &cycles[c + 1]})
+      for(const auto& e : *cycle) edges[std::minmax(e.first, e.second)] ^= 1;
+    Cycle sum;
+    for(const auto& [e, odd] : edges) if(odd) sum.push_back(e);
+    cycles.insert(cycles.begin() + 20, sum);
   }
   assert(cycles.size() > 64);
   std::vector<DT::Facet> b;

@@ -15,6 +15,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
 #include <CGAL/Lex_optimal_chains/internal/Delaunay_builder.h>
 #include <CGAL/Lex_optimal_chains/internal/Feature_subcomplex_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Geom_traits_check.h>
 #include <CGAL/Lex_optimal_chains/internal/Sparse_critical_basis.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 
@@ -157,8 +158,9 @@ struct Ranked_chains
 
 // The border points of `border_features`: the largest angular gap between a point's 12
 // nearest neighbours above 75 degrees. A straight border leaves a gap of about 180 degrees,
-// the corner of a rectangular hole about 90; the neighbours of an inner point leave less than
-// about 60.
+// the corner of a rectangular hole about 90; the neighbours of an inner point of an even
+// (jittered grid) sampling leave less than about 60, those of a random uniform sampling
+// often more.
 constexpr std::size_t border_neighbours = 12;
 constexpr double border_gap = 75 * CGAL_PI / 180;
 
@@ -371,8 +373,12 @@ non-manifold edges and vertices are split as in the other reconstructions.
                           projected on its tangent plane (by their covariance), leave an
                           angular gap of more than 75 degrees around it. With the borders in
                           \f$S\f$, a hole's rim is a cycle of \f$B\f$ and the hole's filling
-                          one element, among the largest. Meant for evenly sampled
-                          surfaces: scan lines leave gaps too (the manual gives figures)}
+                          one element, among the largest (if the hole is wider than twice the
+                          offset, which B's edges do not span). Meant for evenly sampled
+                          surfaces (grids, meshes' vertices): the 12 nearest neighbours of a
+                          point of a random uniform sampling leave a gap above 75 degrees at
+                          most inner points, and scan lines leave gaps too (the manual gives
+                          figures)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd
@@ -419,7 +425,9 @@ lex_optimal_feature_reconstruction(const PointRange& points, PolygonMesh& mesh,
   namespace LOC = Lex_optimal_chains;
   using Point_map = typename GetPointMap<PointRange, NamedParameters>::const_type;
   using Point = typename boost::property_traits<Point_map>::value_type;
-  using DT = Delaunay_triangulation_3<typename Kernel_traits<Point>::Kernel>;
+  using Kernel = typename Kernel_traits<Point>::Kernel;
+  static_assert(LOC::internal::Has_exact_predicates_and_double_coordinates<Kernel>::value, "");
+  using DT = Delaunay_triangulation_3<Kernel>;
   LOC::Feature_reconstruction_report report;
   LOC::internal::Stopwatch total, watch;
   std::vector<Point> pts = LOC::internal::finite_points<Point>(points, choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map)));
@@ -445,18 +453,31 @@ The same reconstruction on the Delaunay triangulation `dt` of the points, which 
 modified: its finite vertices are the points (the feature points are taken at the nearest
 vertex), and its triangles are those of the chains and of the mesh. `point_map` is not used;
 the other named parameters are those of the function on points. The report's Delaunay time
-is 0.
+is 0. A class derived from `Delaunay_triangulation_3` must be passed as its base (the
+overload on points would otherwise be chosen).
+
+\tparam Gt the geometric traits of the triangulation, with `double` coordinates (its
+predicates should be exact, as those of `CGAL::Exact_predicates_inexact_constructions_kernel`,
+for `dt` to be a Delaunay triangulation; the function's own comparisons are exact)
+\tparam Tds, LocationPolicy, LockDataStructure the other parameters of the triangulation
+\tparam PolygonMesh a model of `MutableFaceGraph`
+
+\param dt the triangulation of the points, of dimension 3; not modified
+\param mesh receives the result (its elements removed first, its property maps kept); on success only
+\param np optional named parameters, those of the function on points but `point_map`
 
 \throws Lex_optimal_chains::Input_error with code `TOO_FEW_POINTS` or `DEGENERATE_POINT_SET`
 for a triangulation of dimension below 3, and the other errors of the function on points.
 `mesh` is then unchanged.
 */
-template <class Gt, class Tds, class Lds, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
+template <class Gt, class Tds, class LocationPolicy, class LockDataStructure, class PolygonMesh,
+          class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Feature_reconstruction_report
-lex_optimal_feature_reconstruction(const Delaunay_triangulation_3<Gt, Tds, Lds>& dt, PolygonMesh& mesh,
-                                   const NamedParameters& np = parameters::default_values())
+lex_optimal_feature_reconstruction(const Delaunay_triangulation_3<Gt, Tds, LocationPolicy, LockDataStructure>& dt,
+                                   PolygonMesh& mesh, const NamedParameters& np = parameters::default_values())
 {
   namespace LOC = Lex_optimal_chains;
+  static_assert(LOC::internal::Has_double_coordinates<Gt>::value, "");
   LOC::Feature_reconstruction_report report;
   LOC::internal::Stopwatch total, watch;
   LOC::internal::check_dimension(dt);

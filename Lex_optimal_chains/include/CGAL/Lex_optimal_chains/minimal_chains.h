@@ -310,7 +310,7 @@ with coefficient 1 on its largest simplex \f$\mathrm{crit}(b_{i+1})\f$. It verif
 \f$b_j(\mathrm{crit}(b_i)) = \delta_{ij}\f$ (Lemma 4.50).
 
 Computed as in Observation 4.54: a basis of the `k`-cycles (Algorithm 4), of which the
-essential ones (their lowest simplex is not the low of a reduced boundary; the others add
+essential ones (their largest simplex is not the low of a reduced boundary; the others add
 nothing to the span) are made minimal in their classes (Algorithm 3); the matrix of these is
 reduced, its columns normalized and sorted lexicographically, and each one totally reduced by
 the previous ones.
@@ -328,10 +328,11 @@ std::vector<Chain<Field>> critical_basis(const Simplicial_complex& complex, int 
   const std::vector<char> in_b_k = internal::simplices_in(complex, k, relative);
   const std::vector<char> in_b_k1 = internal::simplices_in(complex, k + 1, relative);
   // The cycles: kernel columns of V (all k-simplices are cycles when k = 0). A cycle whose
-  // lowest simplex is the low of a reduced boundary is left out: for k >= 1 it is that
-  // boundary (the clearing of Cycle_basis_reduction), which reduces to zero; for k = 0 its
-  // vertex is not the lowest of its component, whose lowest vertex has the same minimal cycle.
-  // Only the essential cycles (as many as the Betti number) are then reduced, each in O(m).
+  // largest simplex (its low) is the low of a reduced boundary is left out: for k >= 1 it is
+  // that boundary (the clearing of Cycle_basis_reduction), which reduces to zero; for k = 0
+  // it reduces to a sum of smaller vertices, which the kept ones span (the set of lows of the
+  // boundaries does not depend on the order of the columns). Only the essential cycles (as
+  // many as the Betti number) are then made minimal, each by one total reduction.
   std::vector<Column> minimal; // minimal cycles, rows = ranks
   const internal::Column_reduction<Field> boundaries(internal::boundary_by_rank<Field>(complex, k, rank, in_b_k, in_b_k1), m, false);
   auto is_boundary_low = [&](std::uint32_t s) { return boundaries.pivot(rank[s]) != boundaries.none; };

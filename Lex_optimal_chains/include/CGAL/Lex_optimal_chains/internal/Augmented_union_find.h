@@ -30,8 +30,9 @@ namespace Lex_optimal_chains {
 namespace internal {
 
 // How the nodes are stored: the parent and the value of its link side by side, so that a
-// step of `find` reads one word (Z2: the value is the top bit of the parent index) or one
-// 8-byte node (integers: a 32-bit value, range-checked).
+// step of `find` reads one word (Z2: the value is the top bit of the parent index), one
+// 8-byte node (integers: a 32-bit value, range-checked) or one 16-byte node (64 chains over
+// Z2: a 64-bit value, 4 bytes of padding).
 template <class Arithmetic>
 struct Augmented_node;
 

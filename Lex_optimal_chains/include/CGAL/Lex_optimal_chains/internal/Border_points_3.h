@@ -8,12 +8,15 @@
 // those whose k nearest neighbours, projected on the point's tangent plane (the plane of
 // their covariance's two largest eigenvectors, through the point), leave an angular gap of
 // more than `minimum_gap` around it. Inside a surface sampled without holes the neighbours
-// surround the point and the largest gap is small; on a straight border it is about pi, at
-// the corner of a rectangular hole about pi/2. Sharp edges inside the surface keep their
+// surround the point and the largest gap is small if the sampling is even (a jittered grid:
+// below about pi/3; a random uniform sampling leaves larger gaps); on a straight border it is
+// about pi, at the corner of a rectangular hole about pi/2. Sharp edges inside the surface keep their
 // neighbours on both sides (the tangent plane is then the bisector), so they are not borders;
 // the VCM finds those.
 
 #include <CGAL/Default_diagonalize_traits.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_type_config.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 

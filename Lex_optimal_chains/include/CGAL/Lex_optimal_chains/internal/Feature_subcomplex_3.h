@@ -15,7 +15,7 @@
 // order on edges.
 
 #include <CGAL/Lex_optimal_chains/Chain_fields.h>
-#include <CGAL/Lex_optimal_chains/Simplex_orders.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Lex_optimal_chains/Simplicial_complex.h>
 #include <CGAL/Lex_optimal_chains/minimal_chains.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
@@ -33,8 +33,9 @@ namespace Lex_optimal_chains {
 namespace internal {
 
 // The order of the package on edges (Weighted_simplex_order with zero weights): by length,
-// then by the coordinates of their sorted vertices; the lengths compared exactly by the
-// kernel's filtered predicate, with no cache of exact values.
+// then by the coordinates of their sorted vertices; the lengths compared exactly by Epick's
+// filtered predicate on the double coordinates (whatever the traits of the points), with no
+// cache of exact values.
 template <class Point>
 struct Edge_length_order
 {
@@ -43,8 +44,9 @@ struct Edge_length_order
   bool operator()(const Simplicial_complex::Simplex& a, const Simplicial_complex::Simplex& b) const
   {
     const std::vector<Point>& p = *points;
-    const Comparison_result c =
-      typename Kernel_traits<Point>::Kernel().compare_distance_3_object()(p[a[0]], p[a[1]], p[b[0]], p[b[1]]);
+    using Epick = Exact_predicates_inexact_constructions_kernel;
+    auto at = [&](std::uint32_t v) { return Epick::Point_3(p[v].x(), p[v].y(), p[v].z()); };
+    const Comparison_result c = Epick().compare_distance_3_object()(at(a[0]), at(a[1]), at(b[0]), at(b[1]));
     if(c != EQUAL) return c == SMALLER;
     std::array<Point, 2> x{p[a[0]], p[a[1]]}, y{p[b[0]], p[b[1]]};
     if(y[1] < y[0]) std::swap(y[0], y[1]);
