@@ -1,23 +1,31 @@
 // The Lex_optimal_chains plugin of CGAL's Polyhedron demo: surface reconstruction of a point
 // set item as a lexicographic optimal chain of its Delaunay triangulation.
 //
-// Two actions on a point set item:
+// Three actions on a point set item:
 //  - "Closed surface (lexicographic)": the interior is found automatically (the most persistent
 //    void), or given by the points of another selected point set item;
 //  - "Open surface (lexicographic)": the surface bounded by the closed polylines of a selected
-//    polylines item, or by the automatic footprint polygon (terrain tiles), over Q or Z2.
+//    polylines item, or by the automatic footprint polygon (terrain tiles), over Q or Z2;
+//  - "Feature-guided reconstruction (lexicographic)": the elements of the critical basis
+//    around sharp features (lex_optimal_feature_reconstruction()), one colour per element.
 // The result is a new surface mesh item; the statistics of the report go to the message panel.
-// A progress dialog shows the stages and can cancel (the scene is then left unchanged).
+// For the first two, a progress dialog shows the stages and can cancel (the scene is then left
+// unchanged).
 //
 // Scripting (the demo's QtScript, as in the headless tests): the plugin object is the global
-// `lex_optimal_chains_plugin`; its slots closedSurface(), openSurface(), lastError(),
-// meshStatistics(), saveSnapshot() and setCancelAt() run everything without a modal dialog:
-// errors go to the message panel and to lastError() instead of a message box.
+// `lex_optimal_chains_plugin`; its slots closedSurface(), openSurface(),
+// featureReconstruction(), lastError(), meshStatistics(), saveSnapshot() and setCancelAt() run
+// everything without a modal dialog: errors go to the message panel and to lastError()
+// instead of a message box.
 
 #include <QAction>
 #include <QApplication>
 #include <QDialog>
+#include <QCheckBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFormLayout>
 #include <QFileInfo>
 #include <QImage>
 #include <QJsonDocument>
@@ -25,6 +33,7 @@
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QSpinBox>
 #include <QThread>
 
 #include "Scene_points_with_normal_item.h"
@@ -38,12 +47,14 @@
 #include <CGAL/Three/Viewer_interface.h>
 
 #include <CGAL/lex_optimal_closed_surface.h>
+#include <CGAL/lex_optimal_feature_reconstruction.h>
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/property_map.h>
+#include <CGAL/Random.h>
 
 #include "ui_Lex_optimal_chains_dialog.h"
 #include "View_snapshot.h"
@@ -51,6 +62,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace LOC = CGAL::Lex_optimal_chains;
@@ -190,6 +202,61 @@ public:
   }
 };
 
+// The parameters of the feature-guided reconstruction (lex_reconstruct features).
+struct Feature_request
+{
+  CGAL::Three::Scene_interface::Item_id points_item = -1;
+  double threshold = 0.16; // of the VCM
+  double offset = 0;       // of the feature set; 0 for the library's default
+  int drop_largest = 0;
+  bool borders = false, relative = false;
+};
+
+// The dialog of the feature-guided reconstruction (built in code: five fields).
+class Feature_dialog : public QDialog
+{
+public:
+  explicit Feature_dialog(QWidget* parent) : QDialog(parent)
+  {
+    setWindowTitle(tr("Feature-guided reconstruction (lexicographic)"));
+    auto* form = new QFormLayout(this);
+    threshold_->setRange(0.01, 0.5);
+    threshold_->setSingleStep(0.01);
+    threshold_->setValue(0.16);
+    form->addRow(tr("VCM threshold"), threshold_);
+    offset_->setRange(0, 1e9);
+    offset_->setDecimals(4);
+    offset_->setSpecialValueText(tr("1.5 x average spacing"));
+    form->addRow(tr("Feature offset"), offset_);
+    drop_->setRange(0, 1000);
+    form->addRow(tr("Largest elements left out"), drop_);
+    borders_->setText(tr("Borders of the scan as features (opens occlusion holes)"));
+    form->addRow(borders_);
+    relative_->setText(tr("Chains relative to the features"));
+    form->addRow(relative_);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    form->addRow(buttons);
+  }
+
+  void fill(Feature_request& r) const
+  {
+    r.threshold = threshold_->value();
+    r.offset = offset_->value();
+    r.drop_largest = drop_->value();
+    r.borders = borders_->isChecked();
+    r.relative = relative_->isChecked();
+  }
+
+private:
+  QDoubleSpinBox* threshold_ = new QDoubleSpinBox(this);
+  QDoubleSpinBox* offset_ = new QDoubleSpinBox(this);
+  QSpinBox* drop_ = new QSpinBox(this);
+  QCheckBox* borders_ = new QCheckBox(this);
+  QCheckBox* relative_ = new QCheckBox(this);
+};
+
 class Polyhedron_demo_lex_optimal_chains_plugin : public QObject, public CGAL::Three::Polyhedron_demo_plugin_helper
 {
   Q_OBJECT
@@ -207,6 +274,9 @@ public:
     actionOpen = new QAction(tr("Open surface (lexicographic)"), mw);
     actionOpen->setObjectName("actionLexOpenSurface");
     actionOpen->setProperty("subMenuName", "Point Set Processing/Surface Reconstruction");
+    actionFeatures = new QAction(tr("Feature-guided reconstruction (lexicographic)"), mw);
+    actionFeatures->setObjectName("actionLexFeatures");
+    actionFeatures->setProperty("subMenuName", "Point Set Processing/Surface Reconstruction");
     autoConnectActions();
   }
 
@@ -215,11 +285,20 @@ public:
     return qobject_cast<Scene_points_with_normal_item*>(scene->item(scene->mainSelectionIndex())) != nullptr;
   }
 
-  QList<QAction*> actions() const override { return QList<QAction*>() << actionClosed << actionOpen; }
+  QList<QAction*> actions() const override { return QList<QAction*>() << actionClosed << actionOpen << actionFeatures; }
 
 public Q_SLOTS:
   void on_actionLexClosedSurface_triggered() { run_from_dialog(true); }
   void on_actionLexOpenSurface_triggered() { run_from_dialog(false); }
+  void on_actionLexFeatures_triggered()
+  {
+    Feature_request r;
+    r.points_item = scene->mainSelectionIndex();
+    Feature_dialog dialog(mw);
+    if(dialog.exec() != QDialog::Accepted) return;
+    dialog.fill(r);
+    run_features(r, true);
+  }
 
   // Scripting: the index of the new surface mesh item, or -1 (reason in lastError()).
   // interior_item: a point set item, or -1 for the automatic interior; min_persistence 0
@@ -248,6 +327,21 @@ public Q_SLOTS:
     return run(r, false);
   }
 
+  // Scripting: the feature-guided reconstruction (lex_reconstruct features); offset 0 for the
+  // library's default. The faces of the new item carry their element as their patch id.
+  int featureReconstruction(int points_item, double threshold = 0.16, double offset = 0, int drop_largest = 0,
+                            bool borders = false, bool relative = false)
+  {
+    Feature_request r;
+    r.points_item = points_item;
+    r.threshold = threshold;
+    r.offset = offset;
+    r.drop_largest = drop_largest;
+    r.borders = borders;
+    r.relative = relative;
+    return run_features(r, false);
+  }
+
   // the reason why the last run made no item ("" after a success)
   QString lastError() const { return last_error; }
 
@@ -263,9 +357,11 @@ private:
   int run(const Lex_request& r, bool interactive);
   QString reconstruct(const Lex_request& r, const std::vector<Point>& points, Progress& progress, SMesh& mesh) const;
   int fail(const QString& reason, bool interactive);
+  int run_features(const Feature_request& r, bool interactive);
 
   QAction* actionClosed = nullptr;
   QAction* actionOpen = nullptr;
+  QAction* actionFeatures = nullptr;
   QString last_error;
   double cancel_at = -1;
 }; // end Polyhedron_demo_lex_optimal_chains_plugin
@@ -417,6 +513,69 @@ QString Polyhedron_demo_lex_optimal_chains_plugin::reconstruct(const Lex_request
   return summary;
 }
 
+// Runs the feature-guided reconstruction: on success a new surface mesh item, one colour per
+// element (its patch id), the point set hidden; on an error nothing is added or modified.
+int Polyhedron_demo_lex_optimal_chains_plugin::run_features(const Feature_request& r, bool interactive)
+{
+  last_error.clear();
+  const auto* pts_item = qobject_cast<Scene_points_with_normal_item*>(scene->item(r.points_item));
+  if(pts_item == nullptr) return fail(tr("the item to reconstruct is not a point set"), interactive);
+  if(r.drop_largest < 0) return fail(tr("the number of elements left out must not be negative"), interactive);
+  const std::vector<Point> points = points_of(*pts_item);
+  std::unique_ptr<SMesh> mesh(new SMesh);
+  auto element = mesh->add_property_map<SMesh::Face_index, std::size_t>("f:lex_element", 0).first; // moved to the item's patch ids
+  LOC::Feature_reconstruction_report report;
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  try {
+    const auto np = LOC::parameters::feature_threshold(r.threshold,
+                    LOC::parameters::border_features(r.borders,
+                    LOC::parameters::relative_to_features(r.relative,
+                    LOC::parameters::drop_largest_elements(std::size_t(r.drop_largest),
+                    LOC::parameters::face_element_map(element)))));
+    report = r.offset > 0 ? CGAL::lex_optimal_feature_reconstruction(points, *mesh, LOC::parameters::feature_offset(r.offset, np))
+                          : CGAL::lex_optimal_feature_reconstruction(points, *mesh, np);
+  } catch(const LOC::Input_error& e) {
+    QApplication::restoreOverrideCursor();
+    return fail(QString::fromStdString(e.what()), interactive);
+  } catch(const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    return fail(tr("unexpected error: %1").arg(e.what()), interactive);
+  }
+  QApplication::restoreOverrideCursor();
+  const Mesh_statistics s = mesh_statistics(*mesh);
+  // as the demo's shape detection colours its regions: the item first, then the patch ids (the
+  // element of each face) and one colour per element
+  Scene_surface_mesh_item* new_item = new Scene_surface_mesh_item;
+  new_item->setName(tr("%1 (lexicographic elements)").arg(pts_item->name()));
+  SMesh& fg = *new_item->polyhedron();
+  fg = *mesh;
+  auto fg_element = fg.property_map<SMesh::Face_index, std::size_t>("f:lex_element").first;
+  auto patch = fg.add_property_map<SMesh::Face_index, int>("f:patch_id", 0).first;
+  for(SMesh::Face_index f : fg.faces()) patch[f] = int(fg_element[f]);
+  fg.remove_property_map(fg_element);
+  new_item->setItemIsMulticolor(true);
+  new_item->computeItemColorVectorAutomatically(false);
+  auto& colors = new_item->color_vector();
+  colors.clear();
+  for(std::size_t e = 0; e < report.element_sizes.size(); ++e) {
+    CGAL::Random random(static_cast<unsigned int>(e));
+    colors.push_back(QColor(64 + random.get_int(0, 192), 64 + random.get_int(0, 192), 64 + random.get_int(0, 192)));
+  }
+  new_item->invalidateOpenGLBuffers();
+  const CGAL::Three::Scene_interface::Item_id id = scene->addItem(new_item);
+  scene->item(r.points_item)->setVisible(false);
+  scene->itemChanged(r.points_item);
+  CGAL::Three::Three::information(
+    tr("Elements of %1: %2 feature points (%3 on borders), beta %4, %5 elements (%6 left out), %7 faces, "
+       "%8 vertices, %9 component(s); times: Delaunay %10 s, features %11 s, subcomplex %12 s, chains %13 s, "
+       "basis %14 s, total %15 s")
+      .arg(pts_item->name()).arg(report.number_of_feature_points).arg(report.number_of_border_points)
+      .arg(report.number_of_cycles).arg(report.element_sizes.size()).arg(report.number_of_dropped_elements)
+      .arg(s.faces).arg(s.vertices).arg(s.components).arg(report.delaunay_seconds).arg(report.feature_seconds)
+      .arg(report.subcomplex_seconds).arg(report.chain_seconds).arg(report.basis_seconds).arg(report.total_seconds));
+  return id;
+}
+
 // Scripting: the topology of a surface mesh item as one JSON line, with the keys of
 // `lex_reconstruct --json` ("" if the item is not a surface mesh).
 QString Polyhedron_demo_lex_optimal_chains_plugin::meshStatistics(int item) const
@@ -433,6 +592,12 @@ QString Polyhedron_demo_lex_optimal_chains_plugin::meshStatistics(int item) cons
   j["genus"] = qint64(s.genus);
   j["closed"] = s.closed;
   j["is_closed"] = CGAL::is_closed(*sm_item->face_graph()); // CGAL's own test, as a cross-check
+  const auto patch = sm_item->face_graph()->property_map<SMesh::Face_index, int>("f:patch_id");
+  if(patch.second) { // the elements of a feature-guided reconstruction
+    std::set<int> elements;
+    for(SMesh::Face_index f : sm_item->face_graph()->faces()) elements.insert(patch.first[f]);
+    j["elements"] = qint64(elements.size());
+  }
   return QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact));
 }
 

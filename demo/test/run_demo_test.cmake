@@ -1,9 +1,9 @@
 # Driver of a headless test of the Lex_optimal_chains plugin (cmake -P):
 #   cmake -DDEMO=<Polyhedron_3> -DLEX_RECONSTRUCT=<lex_reconstruct> -DSCRIPT=<test .js> -DDATA=<points_3 dir>
-#         -DOUT=<output dir> -DCASE=closed|open|errors [-DTIMEOUT=<s>] -P run_demo_test.cmake
+#         -DOUT=<output dir> -DCASE=closed|open|features|errors [-DTIMEOUT=<s>] -P run_demo_test.cmake
 # Runs the real demo under xvfb-run with the QtScript test file, then checks what the script
 # printed ("QtScript: RESULT <json>" lines of the demo's stdout) against lex_reconstruct --json
-# on the same input (closed, open) or against the library's reasons (errors), and that the
+# on the same input (closed, open, features) or against the library's reasons (errors), and that the
 # screenshots are real images. Fails (FATAL_ERROR) on any difference.
 cmake_minimum_required(VERSION 3.19) # string(JSON)
 foreach(var DEMO LEX_RECONSTRUCT SCRIPT DATA OUT CASE)
@@ -45,6 +45,9 @@ if(CASE STREQUAL "closed")
 elseif(CASE STREQUAL "open")
   reference(expected open "${DATA}/b9_training.ply" "${OUT}/b9_cli.off" --auto-boundary)
   reference(expected_z2 open "${DATA}/b9_training.ply" "${OUT}/b9_z2_cli.off" --auto-boundary --coefficients z2)
+elseif(CASE STREQUAL "features")
+  reference(expected features "${DATA}/b9_training.ply" "${OUT}/b9_features_cli.off")
+  reference(expected_dropped features "${DATA}/b9_training.ply" "${OUT}/b9_features_dropped_cli.off" --drop-largest 1)
 endif()
 
 # The demo: the helpers, then the test script.
@@ -78,6 +81,26 @@ elseif(CASE STREQUAL "open")
   string(JSON mesh_z2 GET "${result}" mesh_z2)
   check_mesh("${mesh_z2}" "${expected_z2}")
   check_png(open_b9_training.png)
+elseif(CASE STREQUAL "features")
+  # the CLI's JSON has the topology under "mesh" and the elements at the top
+  foreach(run mesh:expected dropped:expected_dropped)
+    string(REPLACE ":" ";" run "${run}")
+    list(GET run 0 key)
+    list(GET run 1 variable)
+    string(JSON demo_mesh GET "${result}" ${key})
+    string(JSON cli_mesh GET "${${variable}}" mesh)
+    check_mesh("${demo_mesh}" "${cli_mesh}")
+    string(JSON kept GET "${${variable}}" elements)
+    string(JSON dropped_elements GET "${${variable}}" dropped_elements)
+    math(EXPR kept "${kept} - ${dropped_elements}")
+    check("${demo_mesh}" elements EQUAL "${kept}") # one colour per element in the mesh
+  endforeach()
+  check("${result}" bad item EQUAL -1)
+  check("${result}" bad error MATCHES "threshold must be positive")
+  string(JSON before GET "${result}" bad entries_before)
+  check("${result}" bad entries_after EQUAL "${before}")
+  check("${result}" actions 0 EQUAL "Feature-guided reconstruction (lexicographic)")
+  check_png(features_b9_training.png)
 elseif(CASE STREQUAL "errors")
   # each bad input: no item (-1), the library's reason, and the scene kept as it was
   foreach(name empty no_interior open_polyline cancelled)
