@@ -551,6 +551,82 @@ void test_bad_input()
   assert(!LOC::minimal_chain_with_boundary<LOC::Z2_field>(h2, 2, one, loop2));
 }
 
+// The critical basis relative to a subcomplex B over Z2, in dimensions 0 and 1 (where
+// critical_basis() leaves out the cycles whose largest simplex is the low of a boundary): its
+// size is the relative Betti number (ranks of the relative boundary matrices by an elimination
+// written here), each element is a relative cycle with no simplex of B, minimal in its class,
+// and Lemma 4.50 holds.
+void test_relative_critical_basis(CGAL::Random& rng)
+{
+  using F = LOC::Z2_field;
+  std::size_t largest = 0, trials = 0;
+  for(int trial = 0; trial < 150; ++trial) {
+    const LOC::Simplicial_complex c = random_complex(rng, 8, rng.get_int(6, 16), rng.get_int(2, 4));
+    const int k = rng.get_int(0, 2);
+    const std::size_t m = c.number_of_simplices(k);
+    if(m == 0) continue;
+    LOC::Simplicial_complex b(c.number_of_vertices()); // a few simplices of K with their faces
+    for(int i = rng.get_int(1, 4); i > 0; --i) {
+      const int d = rng.get_int(0, c.dimension() + 1);
+      if(c.number_of_simplices(d) == 0) continue;
+      b.add_simplex(c.simplex(d, std::size_t(rng.get_int(0, int(c.number_of_simplices(d))))));
+    }
+    auto in_b = [&](int d, std::size_t i) { return d >= 0 && b.index(c.simplex(d, i)) >= 0; };
+    // rank over Z2 of the boundary from dimension d to d - 1, rows and columns of B removed
+    auto relative_rank = [&](int d) -> std::size_t {
+      if(d <= 0 || c.number_of_simplices(d) == 0) return 0;
+      std::vector<std::vector<bool>> rows;
+      for(std::size_t j = 0; j < c.number_of_simplices(d); ++j) {
+        if(in_b(d, j)) continue;
+        std::vector<bool> row(c.number_of_simplices(d - 1), false);
+        for(const auto& fs : c.boundary(d, j)) if(!in_b(d - 1, fs.first)) row[fs.first] = !row[fs.first];
+        rows.push_back(row);
+      }
+      std::size_t r = 0;
+      for(std::size_t col = 0; col < c.number_of_simplices(d - 1) && r < rows.size(); ++col) {
+        std::size_t p = r;
+        while(p < rows.size() && !rows[p][col]) ++p;
+        if(p == rows.size()) continue;
+        std::swap(rows[p], rows[r]);
+        for(std::size_t q = 0; q < rows.size(); ++q)
+          if(q != r && rows[q][col])
+            for(std::size_t x = 0; x < rows[q].size(); ++x) rows[q][x] = rows[q][x] != rows[r][x];
+        ++r;
+      }
+      return r;
+    };
+    std::size_t outside = 0;
+    for(std::size_t i = 0; i < m; ++i) outside += !in_b(k, i);
+    std::vector<std::uint32_t> order(m);
+    for(std::uint32_t i = 0; i < m; ++i) order[i] = i;
+    CGAL::cpp98::random_shuffle(order.begin(), order.end(), rng);
+    std::vector<std::uint32_t> rank(m);
+    for(std::uint32_t r = 0; r < m; ++r) rank[order[r]] = r;
+    const auto basis = LOC::critical_basis<F>(c, k, order, &b);
+    assert(basis.size() == outside - relative_rank(k) - relative_rank(k + 1));
+    auto crit = [&](const LOC::Chain<F>& x) {
+      std::uint32_t best = x.front().first;
+      for(const auto& e : x) if(rank[e.first] > rank[best]) best = e.first;
+      return best;
+    };
+    for(std::size_t i = 0; i < basis.size(); ++i) {
+      for(const auto& e : basis[i]) assert(!in_b(k, e.first));
+      for(const auto& e : boundary_of<F>(c, k, basis[i])) assert(in_b(k - 1, e.first)); // a relative cycle
+      assert(LOC::minimal_homologous_chain<F>(c, k, order, basis[i], &b) == basis[i]);
+      for(std::size_t j = 0; j < basis.size(); ++j) {
+        bool has = false;
+        for(const auto& e : basis[j]) has = has || e.first == crit(basis[i]);
+        assert(has == (i == j)); // Lemma 4.50
+      }
+    }
+    largest = (std::max)(largest, basis.size());
+    trials += !basis.empty();
+  }
+  std::cout << "relative critical bases in dimensions 0 and 1: up to " << largest << " elements, " << trials
+            << " non-empty" << std::endl;
+  assert(largest >= 3 && trials >= 50);
+}
+
 int main()
 {
   CGAL::Random rng(17);
@@ -567,6 +643,7 @@ int main()
   test_critical_basis<LOC::Z2_field>(rng, true);
   test_critical_basis<Zp>(rng, false);
   test_critical_basis<LOC::Q_field>(rng, false);
+  test_relative_critical_basis(rng);
   test_bad_input();
   std::cout << "test_minimal_chains: OK\n";
   return 0;
