@@ -410,6 +410,33 @@ void check_sparse_critical_basis(CGAL::Random& rng, const std::vector<Chain>& ba
   }
 }
 
+// The rank over Z2 of the boundary matrix from dimension d (>= 1) to d - 1, without the
+// simplices that `excluded(dimension, index)` names (its rows and columns), by a Gaussian
+// elimination on bit rows written here.
+template <class Excluded>
+std::size_t z2_boundary_rank(const LOC::Simplicial_complex& c, int d, const Excluded& excluded)
+{
+  std::vector<std::vector<bool>> rows;
+  for(std::size_t j = 0; j < c.number_of_simplices(d); ++j) {
+    if(excluded(d, j)) continue;
+    std::vector<bool> row(c.number_of_simplices(d - 1), false);
+    for(const auto& fs : c.boundary(d, j)) if(!excluded(d - 1, fs.first)) row[fs.first] = !row[fs.first];
+    rows.push_back(row);
+  }
+  std::size_t r = 0;
+  for(std::size_t col = 0; col < c.number_of_simplices(d - 1) && r < rows.size(); ++col) {
+    std::size_t p = r;
+    while(p < rows.size() && !rows[p][col]) ++p;
+    if(p == rows.size()) continue;
+    std::swap(rows[p], rows[r]);
+    for(std::size_t q = 0; q < rows.size(); ++q)
+      if(q != r && rows[q][col])
+        for(std::size_t x = 0; x < rows[q].size(); ++x) rows[q][x] = rows[q][x] != rows[r][x];
+    ++r;
+  }
+  return r;
+}
+
 template <class Field>
 void test_critical_basis(CGAL::Random& rng, bool z2)
 {
@@ -432,26 +459,7 @@ void test_critical_basis(CGAL::Random& rng, bool z2)
     // its size is the Betti number: m - rank d_k - rank d_{k+1}, ranks by Z2 / field elimination
     auto rank_of = [&](int dim) -> std::size_t {
       if(dim <= 0 || c.number_of_simplices(dim) == 0) return 0;
-      if(z2) { // Gaussian elimination on bit rows, written here
-        std::vector<std::vector<bool>> rows;
-        for(std::size_t j = 0; j < c.number_of_simplices(dim); ++j) {
-          std::vector<bool> row(c.number_of_simplices(dim - 1), false);
-          for(const auto& fs : c.boundary(dim, j)) row[fs.first] = !row[fs.first];
-          rows.push_back(row);
-        }
-        std::size_t r = 0;
-        for(std::size_t col = 0; col < c.number_of_simplices(dim - 1) && r < rows.size(); ++col) {
-          std::size_t p = r;
-          while(p < rows.size() && !rows[p][col]) ++p;
-          if(p == rows.size()) continue;
-          std::swap(rows[p], rows[r]);
-          for(std::size_t q = 0; q < rows.size(); ++q)
-            if(q != r && rows[q][col])
-              for(std::size_t x = 0; x < rows[q].size(); ++x) rows[q][x] = rows[q][x] != rows[r][x];
-          ++r;
-        }
-        return r;
-      }
+      if(z2) return z2_boundary_rank(c, dim, [](int, std::size_t) { return false; });
       std::vector<LOC::internal::Sparse_column<Field>> cols;
       for(std::size_t j = 0; j < c.number_of_simplices(dim); ++j) {
         LOC::internal::Sparse_column<Field> col;
@@ -553,8 +561,8 @@ void test_bad_input()
 
 // The critical basis relative to a subcomplex B over Z2, in dimensions 0 and 1 (where
 // critical_basis() leaves out the cycles whose largest simplex is the low of a boundary): its
-// size is the relative Betti number (ranks of the relative boundary matrices by an elimination
-// written here), each element is a relative cycle with no simplex of B, minimal in its class,
+// size is the relative Betti number (ranks of the relative boundary matrices by
+// z2_boundary_rank()), each element is a relative cycle with no simplex of B, minimal in its class,
 // and Lemma 4.50 holds.
 void test_relative_critical_basis(CGAL::Random& rng)
 {
@@ -574,26 +582,7 @@ void test_relative_critical_basis(CGAL::Random& rng)
     auto in_b = [&](int d, std::size_t i) { return d >= 0 && b.index(c.simplex(d, i)) >= 0; };
     // rank over Z2 of the boundary from dimension d to d - 1, rows and columns of B removed
     auto relative_rank = [&](int d) -> std::size_t {
-      if(d <= 0 || c.number_of_simplices(d) == 0) return 0;
-      std::vector<std::vector<bool>> rows;
-      for(std::size_t j = 0; j < c.number_of_simplices(d); ++j) {
-        if(in_b(d, j)) continue;
-        std::vector<bool> row(c.number_of_simplices(d - 1), false);
-        for(const auto& fs : c.boundary(d, j)) if(!in_b(d - 1, fs.first)) row[fs.first] = !row[fs.first];
-        rows.push_back(row);
-      }
-      std::size_t r = 0;
-      for(std::size_t col = 0; col < c.number_of_simplices(d - 1) && r < rows.size(); ++col) {
-        std::size_t p = r;
-        while(p < rows.size() && !rows[p][col]) ++p;
-        if(p == rows.size()) continue;
-        std::swap(rows[p], rows[r]);
-        for(std::size_t q = 0; q < rows.size(); ++q)
-          if(q != r && rows[q][col])
-            for(std::size_t x = 0; x < rows[q].size(); ++x) rows[q][x] = rows[q][x] != rows[r][x];
-        ++r;
-      }
-      return r;
+      return d <= 0 || c.number_of_simplices(d) == 0 ? 0 : z2_boundary_rank(c, d, in_b);
     };
     std::size_t outside = 0;
     for(std::size_t i = 0; i < m; ++i) outside += !in_b(k, i);
