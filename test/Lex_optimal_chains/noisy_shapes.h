@@ -129,11 +129,11 @@ inline double mean_distance_to_mesh(const std::vector<Point>& points, const Mesh
 // (jet fitting, 18 neighbours) and oriented (minimum spanning tree) when they have none.
 //
 // CGAL 5.5's conversion of the surface mesher's output (facets_in_complex_2_to_triangle_mesh)
-// sometimes walks past the last facet and fails a precondition: the mesher breaks its ties by
-// the addresses of the cells, so a run of this test fails or not with the address-space
-// layout (about one Poisson call in thirty here). Such a run is made again, up to three
-// times, at other addresses; an empty mesh is returned when all fail, which the callers'
-// checks refuse.
+// sometimes walks past the last facet and fails a precondition. Whether it does depends on the
+// address-space layout (cells and facets are ordered by address), so this test failed or not
+// from run to run (3 runs in 20 here, none under gdb, which turns address randomization off).
+// Such a run is made again, up to three times, at other addresses; an empty mesh is returned
+// when all fail, which the callers' checks refuse.
 inline Mesh poisson(std::vector<Point_with_normal> points, bool has_normals)
 {
   const auto np = CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Point_with_normal>())
@@ -154,7 +154,8 @@ inline Mesh poisson(std::vector<Point_with_normal> points, bool has_normals)
         return mesh;
       break; // the solver failed: that is a result, not an accident of addresses
     } catch(const CGAL::Precondition_exception& e) {
-      std::cerr << "CGAL's Poisson reconstruction failed (" << e.expression() << "), made again\n";
+      std::cerr << "CGAL's Poisson reconstruction failed (" << e.expression() << ")"
+                << (attempt < 2 ? ", made again\n" : ", three times: no peer surface\n");
       moved.emplace_back(new char[4096 * (attempt + 1) + 24]);
     }
   }
