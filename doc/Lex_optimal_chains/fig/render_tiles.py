@@ -7,10 +7,8 @@ import glob
 import os
 import sys
 import numpy as np
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+from flat_shading import PALETTE, new_axes, save_view, unit_normals, view_angles, view_direction
 
 def read_ascii_ply(path):
     with open(path) as f:
@@ -24,25 +22,15 @@ def read_ascii_ply(path):
         faces = [[int(x) for x in f.readline().split()[1:4]] for _ in range(counts["face"])]
     return v, np.array(faces)
 
-colours = [(0.55, 0.70, 0.90), (0.95, 0.70, 0.45), (0.60, 0.85, 0.55), (0.90, 0.60, 0.75),
-           (0.75, 0.70, 0.95), (0.95, 0.90, 0.50), (0.55, 0.85, 0.85), (0.85, 0.65, 0.55)]
-azim, elev = (float(sys.argv[3]), float(sys.argv[4])) if len(sys.argv) > 4 else (-60.0, 35.0)
-a, e = np.radians(azim), np.radians(elev)
-view = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
-fig = plt.figure(figsize=(6, 6), dpi=120)
-ax = fig.add_subplot(111, projection="3d")
+azim, elev = view_angles(sys.argv, 35.0)
+view = view_direction(azim, elev)
+palette = PALETTE[:8] # eight colours, as in the manual's figure of nine tiles
+ax = new_axes(6)
 lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
 for k, path in enumerate(sorted(glob.glob(os.path.join(sys.argv[1], "tile_*.ply")))):
     v, f = read_ascii_ply(path)
     tri = v[f]
-    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    n /= np.linalg.norm(n, axis=1)[:, None] + 1e-300
-    shade = 0.3 + 0.7 * np.abs(n @ view)
-    ax.add_collection3d(Poly3DCollection(tri, facecolors=np.outer(shade, colours[k % len(colours)]), linewidths=0))
+    shade = 0.3 + 0.7 * np.abs(unit_normals(tri) @ view)
+    ax.add_collection3d(Poly3DCollection(tri, facecolors=np.outer(shade, palette[k % len(palette)]), linewidths=0))
     lo, hi = np.minimum(lo, v.min(0)), np.maximum(hi, v.max(0))
-c, r = (lo + hi) / 2, (hi - lo).max() / 2
-ax.set_xlim(c[0] - r, c[0] + r); ax.set_ylim(c[1] - r, c[1] + r); ax.set_zlim(c[2] - r, c[2] + r)
-ax.view_init(elev=elev, azim=azim)
-ax.set_axis_off()
-plt.tight_layout()
-plt.savefig(sys.argv[2], bbox_inches="tight")
+save_view(ax, lo, hi, azim, elev, sys.argv[2])
