@@ -64,6 +64,10 @@ if(NOT TARGET Polygon_partition_simplification)
   if(TARGET CGAL::Eigen3_support)
     target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::Eigen3_support)
   endif()
+  # the city-scale LOD2 reconstruction models its buildings in parallel
+  if(TARGET CGAL::TBB_support)
+    target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::TBB_support)
+  endif()
 endif()
 
 # Real data shipped by Debian's libcgal-demo, unpacked in the build tree (never committed).

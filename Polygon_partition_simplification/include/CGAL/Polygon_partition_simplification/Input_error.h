@@ -28,7 +28,8 @@ enum class Input_error_code
   MALFORMED_FILE,         ///< a line of an input file is not in the expected format
   NO_PLANE,               ///< no roof plane found in a point cloud (too few points, or too noisy for the plane distance)
   NO_HORIZONTAL_EXTENT,   ///< the points of a building reconstruction have no extent in the horizontal plane
-  MISSING_PROPERTY        ///< a mesh lacks a property map that the function reads, or has it with another value type
+  MISSING_PROPERTY,       ///< a mesh lacks a property map that the function reads, or has it with another value type
+  NO_BUILDING             ///< a city tile holds no building: no point of a building class, or no cluster or footprint with enough of them
 };
 
 /*!

@@ -37,6 +37,11 @@ enum minimum_building_height_t { minimum_building_height };
 enum height_tolerance_t { height_tolerance };
 enum remove_far_points_t { remove_far_points };
 enum walls_at_facades_t { walls_at_facades };
+enum classification_map_t { classification_map };
+enum ground_classes_t { ground_classes };
+enum building_classes_t { building_classes };
+enum footprints_t { footprints };
+enum number_of_threads_t { number_of_threads };
 
 } // namespace internal_np
 
@@ -103,6 +108,16 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(height_tolerance)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(remove_far_points)
 /// the lift puts the walls on the facades whose points were seen (not at the edges of overhanging roofs)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(walls_at_facades)
+/// property map from the points to their class (an integer, as the ASPRS classes of LAS files)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(classification_map)
+/// the classes of the ground points (`std::vector<int>`)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(ground_classes)
+/// the classes of the building points (`std::vector<int>`)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(building_classes)
+/// the footprints of the buildings (a range of `Polygon_with_holes_2`)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(footprints)
+/// number of threads of the parallel stages
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(number_of_threads)
 
 #undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER
 

@@ -46,23 +46,17 @@ namespace IO {
 /*!
 \ingroup PkgLexOptimalChainsRef
 
-Calls `f(p)` with each point `p` of an uncompressed LAS file, in the order of the file, as it
-reads them (the points are not kept: for clouds larger than memory). The file is read as
-`read_las_points()` reads it (versions 1.0 to 1.4, point data record formats 0 to 10), with
-the scale and offset of the header applied: \f$x = X \cdot s_x + o_x\f$, and likewise for
-\f$y\f$ and \f$z\f$. With `classes` not empty, only the points whose classification is in it
-are given (for instance 2, ground, and 6, building, of the ASPRS
-classes): the 5 low bits of the classification byte for formats 0 to 5, the whole byte for
-formats 6 to 10.
+Calls `f(p, c)` with each point `p` of an uncompressed LAS file and its classification `c`, in
+the order of the file, as it reads them (the points are not kept). The file is read as
+`for_each_las_point()` reads it; the classification is the 5 low bits of the classification
+byte for point formats 0 to 5 (the ASPRS classes 0 to 31), the whole byte for formats 6 to 10.
 
 \tparam Point_3 a point type constructible from three `double`
-\tparam Function a callable `void(const Point_3&)`
-\throws Input_error with code `UNREADABLE_FILE` for a file that cannot be opened, is not a
-LAS file, is compressed (LAZ: decompress it first, with `laszip` or `pdal translate`), has a
-point format or a record length that does not match, or is shorter than its header says.
+\tparam Function a callable `void(const Point_3&, int)`
+\throws Input_error as `for_each_las_point()`
 */
 template <class Point_3, class Function>
-void for_each_las_point(const std::string& path, const std::vector<int>& classes, const Function& f)
+void for_each_las_record(const std::string& path, const Function& f)
 {
   auto fail = [&](const std::string& why) {
     return Input_error(Input_error_code::UNREADABLE_FILE, "'" + path + "': " + why);
@@ -113,9 +107,6 @@ void for_each_las_point(const std::string& path, const std::vector<int>& classes
   in.seekg(data_offset);
   const std::size_t class_offset = format <= 5 ? 15 : 16;
   const unsigned class_mask = format <= 5 ? 0x1F : 0xFF;
-  std::vector<bool> wanted(256, classes.empty());
-  for(int c : classes)
-    if(c >= 0 && c < 256) wanted[std::size_t(c)] = true;
   std::vector<unsigned char> buffer(std::size_t(record_length) * 65536);
   for(std::uint64_t done = 0; done < count;) {
     const std::uint64_t n = std::min<std::uint64_t>(65536, count - done);
@@ -123,13 +114,42 @@ void for_each_las_point(const std::string& path, const std::vector<int>& classes
     if(std::uint64_t(in.gcount()) != n * record_length) throw fail("cannot read the points");
     for(std::uint64_t i = 0; i < n; ++i) {
       const unsigned char* record = buffer.data() + i * record_length;
-      if(!wanted[record[class_offset] & class_mask]) continue;
       f(Point_3(las_field<std::int32_t>(record) * scale[0] + offset[0],
                 las_field<std::int32_t>(record + 4) * scale[1] + offset[1],
-                las_field<std::int32_t>(record + 8) * scale[2] + offset[2]));
+                las_field<std::int32_t>(record + 8) * scale[2] + offset[2]),
+        int(record[class_offset] & class_mask));
     }
     done += n;
   }
+}
+
+/*!
+\ingroup PkgLexOptimalChainsRef
+
+Calls `f(p)` with each point `p` of an uncompressed LAS file, in the order of the file, as it
+reads them (the points are not kept: for clouds larger than memory). The file is read as
+`read_las_points()` reads it (versions 1.0 to 1.4, point data record formats 0 to 10), with
+the scale and offset of the header applied: \f$x = X \cdot s_x + o_x\f$, and likewise for
+\f$y\f$ and \f$z\f$. With `classes` not empty, only the points whose classification is in it
+are given (for instance 2, ground, and 6, building, of the ASPRS
+classes): the 5 low bits of the classification byte for formats 0 to 5, the whole byte for
+formats 6 to 10.
+
+\tparam Point_3 a point type constructible from three `double`
+\tparam Function a callable `void(const Point_3&)`
+\throws Input_error with code `UNREADABLE_FILE` for a file that cannot be opened, is not a
+LAS file, is compressed (LAZ: decompress it first, with `laszip` or `pdal translate`), has a
+point format or a record length that does not match, or is shorter than its header says.
+*/
+template <class Point_3, class Function>
+void for_each_las_point(const std::string& path, const std::vector<int>& classes, const Function& f)
+{
+  std::vector<bool> wanted(256, classes.empty());
+  for(int c : classes)
+    if(c >= 0 && c < 256) wanted[std::size_t(c)] = true;
+  for_each_las_record<Point_3>(path, [&](const Point_3& p, int c) {
+    if(wanted[std::size_t(c)]) f(p);
+  });
 }
 
 /*!

@@ -74,6 +74,39 @@ struct LOD2_settings
   throw Input_error(code, message);
 }
 
+/// the settings of the LOD2 pipeline read from the named parameters, checked
+template <class NamedParameters>
+LOD2_settings lod2_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace pps_np = Polygon_partition_simplification::internal_np;
+  LOD2_settings settings;
+  settings.planes.maximum_distance = choose_parameter(get_parameter(np, pps_np::maximum_distance), 0.);
+  settings.planes.maximum_angle = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_normal_deviation), 20.);
+  settings.planes.minimum_region_size = choose_parameter(get_parameter(np, pps_np::minimum_region_size), std::size_t(0));
+  settings.lift.height_threshold = choose_parameter(get_parameter(np, pps_np::height_threshold), 0.);
+  settings.lift.regularization_length = choose_parameter(get_parameter(np, pps_np::regularization_length), 0.);
+  settings.lift.facade_weight = choose_parameter(get_parameter(np, pps_np::facade_weight), 0.25);
+  settings.lift.minimum_building_height = choose_parameter(get_parameter(np, pps_np::minimum_building_height), 0.);
+  settings.height_tolerance = choose_parameter(get_parameter(np, pps_np::height_tolerance), 0.);
+  if(!choose_parameter(get_parameter(np, pps_np::walls_at_facades), true)) settings.lift.facade_samples = 0;
+  const LOD2_settings& s = settings;
+  auto check = [](bool ok, const char* message) {
+    if(!ok) throw_input_error(Input_error_code::INVALID_PARAMETER, message);
+  };
+  check(s.planes.maximum_distance >= 0 && std::isfinite(s.planes.maximum_distance), "maximum_distance must be >= 0");
+  check(s.planes.maximum_angle > 0 && s.planes.maximum_angle < 90, "maximum_normal_deviation must be in (0, 90) degrees");
+  check(s.lift.height_threshold >= 0 && std::isfinite(s.lift.height_threshold), "height_threshold must be >= 0");
+  check(s.lift.regularization_length >= 0 && std::isfinite(s.lift.regularization_length),
+        "regularization_length must be >= 0");
+  check(s.lift.facade_weight >= 0 && s.lift.facade_weight <= 1, "facade_weight must be in [0, 1]");
+  check(s.lift.minimum_building_height >= 0 && std::isfinite(s.lift.minimum_building_height),
+        "minimum_building_height must be >= 0");
+  check(s.height_tolerance >= 0 && std::isfinite(s.height_tolerance), "height_tolerance must be >= 0");
+  return settings;
+}
+
 /// The input points as the kernel's points, their normals and plane indices if given, and the
 /// settings read from the named parameters.
 template <class PointRange, class NamedParameters>
@@ -89,11 +122,19 @@ struct LOD2_input
   std::vector<int> plane_index;
   LOD2_settings settings;
 
+  /// the points of a part of a scene (a building and the ground around it), with the settings
+  /// of the whole scene; `normals` is empty or has one normal per point
+  LOD2_input(std::vector<Point_3> part, std::vector<typename Kernel::Vector_3> part_normals, const LOD2_settings& part_settings)
+    : points(std::move(part)), normals(std::move(part_normals)), settings(part_settings)
+  {
+    if(points.size() < 3) throw_input_error(Input_error_code::EMPTY_INPUT, "fewer than 3 points");
+    sort_points();
+  }
+
   LOD2_input(const PointRange& range, const NamedParameters& np)
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    namespace pps_np = Polygon_partition_simplification::internal_np;
     const Point_map point_map = choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map));
     for(const auto& element : range) {
       const Input_point& p = get(point_map, element);
@@ -106,16 +147,7 @@ struct LOD2_input
     if(points.size() < 3) throw_input_error(Input_error_code::EMPTY_INPUT, "fewer than 3 points");
     read_optional_maps(range, np);
     sort_points();
-    settings.planes.maximum_distance = choose_parameter(get_parameter(np, pps_np::maximum_distance), 0.);
-    settings.planes.maximum_angle = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_normal_deviation), 20.);
-    settings.planes.minimum_region_size = choose_parameter(get_parameter(np, pps_np::minimum_region_size), std::size_t(0));
-    settings.lift.height_threshold = choose_parameter(get_parameter(np, pps_np::height_threshold), 0.);
-    settings.lift.regularization_length = choose_parameter(get_parameter(np, pps_np::regularization_length), 0.);
-    settings.lift.facade_weight = choose_parameter(get_parameter(np, pps_np::facade_weight), 0.25);
-    settings.lift.minimum_building_height = choose_parameter(get_parameter(np, pps_np::minimum_building_height), 0.);
-    settings.height_tolerance = choose_parameter(get_parameter(np, pps_np::height_tolerance), 0.);
-    if(!choose_parameter(get_parameter(np, pps_np::walls_at_facades), true)) settings.lift.facade_samples = 0;
-    check_settings();
+    settings = lod2_settings(np);
   }
 
 private:
@@ -156,23 +188,6 @@ private:
       const auto index_map = get_parameter(np, CGAL::internal_np::plane_index_map);
       for(const auto& element : range) plane_index.push_back(int(get(index_map, element)));
     }
-  }
-
-  void check_settings() const
-  {
-    const auto& s = settings;
-    auto check = [](bool ok, const char* message) {
-      if(!ok) throw_input_error(Input_error_code::INVALID_PARAMETER, message);
-    };
-    check(s.planes.maximum_distance >= 0 && std::isfinite(s.planes.maximum_distance), "maximum_distance must be >= 0");
-    check(s.planes.maximum_angle > 0 && s.planes.maximum_angle < 90, "maximum_normal_deviation must be in (0, 90) degrees");
-    check(s.lift.height_threshold >= 0 && std::isfinite(s.lift.height_threshold), "height_threshold must be >= 0");
-    check(s.lift.regularization_length >= 0 && std::isfinite(s.lift.regularization_length),
-          "regularization_length must be >= 0");
-    check(s.lift.facade_weight >= 0 && s.lift.facade_weight <= 1, "facade_weight must be in [0, 1]");
-    check(s.lift.minimum_building_height >= 0 && std::isfinite(s.lift.minimum_building_height),
-          "minimum_building_height must be >= 0");
-    check(s.height_tolerance >= 0 && std::isfinite(s.height_tolerance), "height_tolerance must be >= 0");
   }
 };
 
@@ -302,17 +317,15 @@ auto kinetic_partition_of_segments(const std::vector<Segment_2>& segments, doubl
   }
 }
 
-template <class PointRange, class Point, class NamedParameters>
-LOD2_report reconstruct_lod2(const PointRange& range, CGAL::Surface_mesh<Point>& mesh, const NamedParameters& np)
+/// the LOD2 model of the points of `input` (sorted, settings read), whose time starts at `total`;
+/// `np` gives the parameters of the kinetic partition and of the simplification
+template <class Input, class Point, class NamedParameters>
+LOD2_report reconstruct_lod2_from_input(Input& input, CGAL::Surface_mesh<Point>& mesh, const NamedParameters& np,
+                                        const CGAL::Real_timer& total)
 {
-  using Input = LOD2_input<PointRange, NamedParameters>;
   using Kernel = typename Input::Kernel;
-  if(!mesh.is_empty())
-    throw_input_error(Input_error_code::INVALID_PARAMETER, "the output mesh must be empty");
-  CGAL::Real_timer total, timer;
-  total.start();
+  CGAL::Real_timer timer;
   timer.start();
-  Input input(range, np);
   LOD2_report report;
   report.points = input.points.size();
   const Bbox_3 box = CGAL::bbox_3(input.points.begin(), input.points.end());
@@ -348,6 +361,17 @@ LOD2_report reconstruct_lod2(const PointRange& range, CGAL::Surface_mesh<Point>&
   lift_and_extrude<Kernel>(input.points, planes, segments, cells, input.settings, mesh, report);
   report.seconds = total.time();
   return report;
+}
+
+template <class PointRange, class Point, class NamedParameters>
+LOD2_report reconstruct_lod2(const PointRange& range, CGAL::Surface_mesh<Point>& mesh, const NamedParameters& np)
+{
+  if(!mesh.is_empty())
+    throw_input_error(Input_error_code::INVALID_PARAMETER, "the output mesh must be empty");
+  CGAL::Real_timer total;
+  total.start();
+  LOD2_input<PointRange, NamedParameters> input(range, np);
+  return reconstruct_lod2_from_input(input, mesh, np, total);
 }
 
 } // namespace internal
