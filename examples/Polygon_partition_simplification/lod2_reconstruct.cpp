@@ -1,33 +1,43 @@
 // lod2_reconstruct: LOD2 building models from a point cloud of buildings and the ground
 // around them (planes, 3D segments, kinetic partition, simplification, lift, extrusion).
 //
-//   lod2_reconstruct INPUT OUTPUT [--planes detect|PROPERTY] [--lambda1 V] [--lambda2 V]
-//                    [--epsilon V] [--json]
+//   lod2_reconstruct INPUT OUTPUT [--planes detect|PROPERTY] [--classes G:B] [--footprints FILE]
+//                    [--threads N] [--lambda1 V] [--lambda2 V] [--epsilon V] [--json]
 //
-// INPUT: points as .ply, .xyz or .off (normals used when present; z is vertical). With
-// --planes PROPERTY, the plane of every point is read from that integer property of a .ply
-// (-1: no plane), as `segment_index` in CGAL's points_3/building.ply. OUTPUT: the model as .off,
-// .ply, .obj, or CityJSON 1.1 when the name ends in .city.json. On bad input: a one-line reason,
-// exit code 1, no output file.
+// INPUT: points as .ply, .xyz, .off or uncompressed .las (normals used when present; z is
+// vertical). A classified input (a LAS file, or a PLY file with an int or uchar `classification`
+// or `label` property) or one given --footprints (GeoJSON polygons) is a city tile: its buildings
+// are modelled one at a time, in parallel (lod2_city_reconstruction()), each as an LoD 2.2 solid
+// or, where that fails, an LoD 1.2 block. Otherwise the points are one scene
+// (lod2_building_reconstruction()); with --planes PROPERTY, the plane of every point is read
+// from that integer property of a .ply (-1: no plane), as `segment_index` in CGAL's
+// points_3/building.ply. OUTPUT: the model as .off, .ply, .obj, CityJSON 1.1 (.city.json) or,
+// for a tile, CityJSON Text Sequences (.city.jsonl). On bad input: a one-line reason, exit code
+// 1, no output file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
+#include <CGAL/Lex_optimal_chains/IO/read_las_points.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
+#include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/lod2_building_reconstruction.h>
+#include <CGAL/lod2_city_reconstruction.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point_set = CGAL::Point_set_3<K::Point_3, K::Vector_3>;
@@ -42,7 +52,7 @@ static bool ends_with(const std::string& s, const std::string& end)
 static Point_set read_points(const std::string& input)
 {
   if(!(ends_with(input, ".ply") || ends_with(input, ".xyz") || ends_with(input, ".off")))
-    throw std::runtime_error("INPUT must be a .ply, .xyz or .off point cloud: " + input);
+    throw std::runtime_error("INPUT must be a .ply, .xyz, .off or .las point cloud: " + input);
   std::ifstream probe(input);
   if(!probe) throw std::runtime_error("cannot read " + input);
   Point_set points;
@@ -73,6 +83,246 @@ static void write_model(const Mesh& model, const std::string& output)
   }
 }
 
+// ---- city tiles: classified points, footprints, one model per building ----
+
+// A point of a city tile: its position, its normal (zero when the input has none) and its class.
+struct Tile_point
+{
+  K::Point_3 point;
+  K::Vector_3 normal = CGAL::NULL_VECTOR;
+  int classification = 0;
+};
+struct Tile_position_map
+{
+  using key_type = Tile_point; using value_type = K::Point_3; using reference = const K::Point_3&;
+  using category = boost::readable_property_map_tag;
+  friend reference get(Tile_position_map, const Tile_point& p) { return p.point; }
+};
+struct Tile_normal_map
+{
+  using key_type = Tile_point; using value_type = K::Vector_3; using reference = const K::Vector_3&;
+  using category = boost::readable_property_map_tag;
+  friend reference get(Tile_normal_map, const Tile_point& p) { return p.normal; }
+};
+struct Tile_class_map
+{
+  using key_type = Tile_point; using value_type = int; using reference = int;
+  using category = boost::readable_property_map_tag;
+  friend int get(Tile_class_map, const Tile_point& p) { return p.classification; }
+};
+
+struct Tile
+{
+  std::vector<Tile_point> points;
+  bool has_classes = false, has_normals = false;
+};
+
+// the class of each point of a PLY point set: its int or uchar property `classification` or `label`
+static bool read_classes(const Point_set& points, std::vector<int>& classes)
+{
+  for(const char* name : {"classification", "label"}) {
+    if(auto map = points.property_map<int>(name); map.second) {
+      for(auto i : points) classes.push_back(map.first[i]);
+      return true;
+    }
+    if(auto map = points.property_map<unsigned char>(name); map.second) {
+      for(auto i : points) classes.push_back(int(map.first[i]));
+      return true;
+    }
+  }
+  return false;
+}
+
+static Tile read_tile(const std::string& input)
+{
+  Tile tile;
+  if(ends_with(input, ".las") || ends_with(input, ".laz")) {
+    try {
+      CGAL::Lex_optimal_chains::IO::for_each_las_record<K::Point_3>(input, [&](const K::Point_3& p, int c) {
+        tile.points.push_back({p, CGAL::NULL_VECTOR, c});
+      });
+    } catch(const std::exception& e) {
+      throw std::runtime_error(e.what());
+    }
+    if(tile.points.empty()) throw std::runtime_error("no point in " + input);
+    tile.has_classes = true;
+    return tile;
+  }
+  const Point_set points = read_points(input);
+  std::vector<int> classes;
+  tile.has_classes = read_classes(points, classes);
+  tile.has_normals = points.has_normal_map();
+  std::size_t k = 0;
+  for(auto i : points) {
+    tile.points.push_back({points.point(i), tile.has_normals ? points.normal(i) : CGAL::NULL_VECTOR,
+                           tile.has_classes ? classes[k] : 0});
+    ++k;
+  }
+  return tile;
+}
+
+// the ground and building classes of --classes G[,G...]:B[,B...]
+static std::pair<std::vector<int>, std::vector<int>> parse_classes(const std::string& text)
+{
+  const std::size_t colon = text.find(':');
+  auto list = [&text](const std::string& part) {
+    std::vector<int> values;
+    std::stringstream in(part);
+    std::string item;
+    while(std::getline(in, item, ',')) {
+      std::size_t used = 0;
+      int value = -1;
+      try { value = std::stoi(item, &used); } catch(const std::exception&) { used = 0; }
+      if(used != item.size() || value < 0 || value > 255)
+        throw std::runtime_error("--classes takes ground classes, a colon and building classes (0 to 255), as 2:6 or 2,9:6: " + text);
+      values.push_back(value);
+    }
+    if(values.empty()) throw std::runtime_error("--classes needs at least one ground and one building class, as 2:6: " + text);
+    return values;
+  };
+  if(colon == std::string::npos) throw std::runtime_error("--classes takes ground classes, a colon and building classes, as 2:6: " + text);
+  return {list(text.substr(0, colon)), list(text.substr(colon + 1))};
+}
+
+using Polygon_with_holes = CGAL::Polygon_with_holes_2<K>;
+
+// a GeoJSON ring: [[x, y], ...], closed (the last position repeats the first), which is dropped
+static CGAL::Polygon_2<K> ring_of(const nlohmann::json& ring, const std::string& where)
+{
+  CGAL::Polygon_2<K> polygon;
+  if(!ring.is_array() || ring.size() < 4) throw std::runtime_error(where + ": a ring needs at least 4 positions");
+  for(std::size_t i = 0; i + 1 < ring.size(); ++i) {
+    const auto& position = ring[i];
+    if(!position.is_array() || position.size() < 2 || !position[0].is_number() || !position[1].is_number())
+      throw std::runtime_error(where + ": a position is not [x, y]");
+    polygon.push_back(K::Point_2(position[0].get<double>(), position[1].get<double>()));
+  }
+  if(ring.front() != ring.back()) throw std::runtime_error(where + ": a ring is not closed (its last position is not its first)");
+  return polygon;
+}
+
+// the polygons of a GeoJSON FeatureCollection (Polygon and MultiPolygon features), in file order
+static std::vector<Polygon_with_holes> read_footprints(const std::string& path)
+{
+  std::ifstream in(path);
+  if(!in) throw std::runtime_error("cannot read the footprints " + path);
+  nlohmann::json document;
+  try {
+    in >> document;
+  } catch(const std::exception&) {
+    throw std::runtime_error("the footprints " + path + " are not JSON");
+  }
+  if(!document.is_object() || document.value("type", "") != "FeatureCollection" || !document["features"].is_array())
+    throw std::runtime_error("the footprints " + path + " are not a GeoJSON FeatureCollection");
+  std::vector<Polygon_with_holes> footprints;
+  auto add_polygon = [&](const nlohmann::json& rings, const std::string& where) {
+    if(!rings.is_array() || rings.empty()) throw std::runtime_error(where + ": a polygon has no ring");
+    Polygon_with_holes polygon(ring_of(rings[0], where));
+    for(std::size_t r = 1; r < rings.size(); ++r) polygon.add_hole(ring_of(rings[r], where));
+    footprints.push_back(std::move(polygon));
+  };
+  for(std::size_t f = 0; f < document["features"].size(); ++f) {
+    const auto& geometry = document["features"][f]["geometry"];
+    const std::string where = path + ", feature " + std::to_string(f);
+    const std::string type = geometry.is_object() ? geometry.value("type", "") : "";
+    if(type == "Polygon") add_polygon(geometry["coordinates"], where);
+    else if(type == "MultiPolygon" && geometry["coordinates"].is_array())
+      for(const auto& polygon : geometry["coordinates"]) add_polygon(polygon, where);
+    else throw std::runtime_error(where + ": its geometry is not a Polygon or a MultiPolygon");
+  }
+  if(footprints.empty()) throw std::runtime_error("no footprint in " + path);
+  return footprints;
+}
+
+using City_building = PPS::City_building<K::Point_3>;
+
+// one mesh of the best model of every building, with the face property f:building
+static Mesh best_models(const std::vector<City_building>& buildings)
+{
+  Mesh all;
+  auto owner = all.add_property_map<Mesh::Face_index, int>("f:building", 0).first;
+  for(const auto& b : buildings) {
+    const Mesh& model = b.status == PPS::Building_model_status::LOD22 ? b.lod22 : b.lod12;
+    const std::size_t first = all.number_of_vertices();
+    for(auto v : model.vertices()) all.add_vertex(model.point(v));
+    for(auto f : model.faces()) {
+      std::vector<Mesh::Vertex_index> corners;
+      for(auto v : CGAL::vertices_around_face(model.halfedge(f), model))
+        corners.push_back(Mesh::Vertex_index(Mesh::size_type(first + std::size_t(v))));
+      owner[all.add_face(corners)] = int(b.id);
+    }
+  }
+  return all;
+}
+
+// the city model written to a temporary file, renamed to `output` once complete
+static void write_city(const std::vector<City_building>& buildings, const std::string& output)
+{
+  const std::string temporary = output + ".partial";
+  bool written = false;
+  if(ends_with(output, ".city.json") || ends_with(output, ".city.jsonl")) {
+    std::ofstream out(temporary, std::ios::binary);
+    written = (ends_with(output, ".city.json") ? PPS::IO::write_CityJSON(out, buildings)
+                                                : PPS::IO::write_CityJSON_sequence(out, buildings)) && out.good();
+  } else {
+    const std::string named = temporary + output.substr(output.rfind('.'));
+    Mesh all = best_models(buildings);
+    written = CGAL::IO::write_polygon_mesh(named, all, CGAL::parameters::stream_precision(17)) &&
+              std::rename(named.c_str(), temporary.c_str()) == 0;
+  }
+  if(!written || std::rename(temporary.c_str(), output.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write " + output);
+  }
+}
+
+static nlohmann::json city_statistics(const PPS::LOD2_city_report& r)
+{
+  nlohmann::json j;
+  j["points"] = r.points;
+  j["building_points"] = r.building_points;
+  j["ground_points"] = r.ground_points;
+  j["spacing"] = r.spacing;
+  j["buildings"] = r.buildings;
+  j["buildings_valid"] = r.buildings_valid;
+  j["buildings_lod12_fallback"] = r.buildings_lod12_fallback;
+  j["clusters_too_small"] = r.clusters_too_small;
+  j["footprints_without_points"] = r.footprints_without_points;
+  j["buildings_per_s"] = r.seconds > 0 ? double(r.buildings) / r.seconds : 0.;
+  j["split_s"] = r.split_seconds;
+  j["planes_s"] = r.planes_seconds;
+  j["segments_s"] = r.segments_seconds;
+  j["partition_s"] = r.partition_seconds;
+  j["simplification_s"] = r.simplification_seconds;
+  j["lift_s"] = r.lift_seconds;
+  j["extrusion_s"] = r.extrusion_seconds;
+  j["validation_s"] = r.validation_seconds;
+  j["buildings_s"] = r.buildings_seconds;
+  j["total_s"] = r.seconds;
+  return j;
+}
+
+// the buildings of a tile; lists the fallbacks and their reasons on std::cerr
+template <class NamedParameters>
+static nlohmann::json reconstruct_city(const Tile& tile, const std::vector<Polygon_with_holes>& footprints,
+                                       const std::string& output, const NamedParameters& np)
+{
+  std::vector<City_building> buildings;
+  PPS::LOD2_city_report report;
+  auto run = [&](const auto& parameters) {
+    if(tile.has_normals)
+      return CGAL::lod2_city_reconstruction(tile.points, buildings, parameters.normal_map(Tile_normal_map()));
+    return CGAL::lod2_city_reconstruction(tile.points, buildings, parameters);
+  };
+  if(!tile.has_classes) report = run(PPS::parameters::footprints(footprints, np));
+  else if(footprints.empty()) report = run(PPS::parameters::classification_map(Tile_class_map(), np));
+  else report = run(PPS::parameters::footprints(footprints, PPS::parameters::classification_map(Tile_class_map(), np)));
+  for(const auto& b : buildings)
+    if(!b.reason.empty()) std::cerr << "lod2_reconstruct: building " << b.id << ": LoD 1.2 only: " << b.reason << std::endl;
+  write_city(buildings, output);
+  return city_statistics(report);
+}
+
 template <class NamedParameters>
 static PPS::LOD2_report reconstruct(const Point_set& points, const std::string& planes, Mesh& model,
                                     const NamedParameters& np)
@@ -88,15 +338,63 @@ static PPS::LOD2_report reconstruct(const Point_set& points, const std::string& 
   return with_normals(base.plane_index_map(property.first));
 }
 
+static nlohmann::json scene_statistics(const PPS::LOD2_report& report)
+{
+  nlohmann::json j;
+  j["points"] = report.points;
+  j["planes"] = report.planes;
+  j["roof_planes"] = report.roof_planes;
+  j["segments"] = report.segments;
+  j["facade_segments"] = report.facade_segments;
+  j["cells_before"] = report.cells_before;
+  j["cells_after"] = report.cells_after;
+  j["buildings"] = report.buildings;
+  j["faces"] = report.faces;
+  j["roof_faces"] = report.roof_faces;
+  j["wall_faces"] = report.wall_faces;
+  j["closed"] = report.closed;
+  j["bounds_volume"] = report.bounds_volume;
+  j["repaired_buildings"] = report.repaired_buildings;
+  j["rms_m"] = report.rms_distance;
+  j["max_m"] = report.maximum_distance;
+  j["measured_points"] = report.measured_points;
+  j["planes_s"] = report.planes_seconds;
+  j["segments_s"] = report.segments_seconds;
+  j["partition_s"] = report.partition_seconds;
+  j["simplification_s"] = report.simplification_seconds;
+  j["lift_s"] = report.lift_seconds;
+  j["extrusion_s"] = report.extrusion_seconds;
+  j["total_s"] = report.seconds;
+  return j;
+}
+
+// the whole point cloud as one scene (lod2_building_reconstruction())
+template <class NamedParameters>
+static nlohmann::json reconstruct_scene(const std::string& input, const std::string& planes, const std::string& output,
+                                        const NamedParameters& np)
+{
+  if(ends_with(output, ".city.jsonl")) throw std::runtime_error("OUTPUT .city.jsonl is for city tiles (classified points or --footprints)");
+  const Point_set points = read_points(input);
+  Mesh model;
+  const PPS::LOD2_report report = reconstruct(points, planes, model, np);
+  if(report.buildings == 0) throw std::runtime_error("no building found in " + input + ": no roof stands above the ground");
+  write_model(model, output);
+  return scene_statistics(report);
+}
+
 int main(int argc, char** argv)
 {
   CLI::App app{"LOD2 building models from a point cloud (planes, segments, kinetic partition, simplification, lift)"};
-  std::string input, output, planes = "detect";
+  std::string input, output, planes = "detect", classes = "2:6", footprints_file;
   double lambda1 = 0.5, lambda2 = 5, epsilon = 0;
+  int threads = 0;
   bool json = false, walls_at_eaves = false;
-  app.add_option("INPUT", input, "points: .ply, .xyz or .off")->required();
-  app.add_option("OUTPUT", output, "model: .off, .ply, .obj, or .city.json (CityJSON 1.1)")->required();
-  app.add_option("--planes", planes, "detect (region growing, default) or the name of an int point property giving the plane of each point");
+  app.add_option("INPUT", input, "points: .ply, .xyz, .off or .las")->required();
+  app.add_option("OUTPUT", output, "model: .off, .ply, .obj, .city.json (CityJSON 1.1) or .city.jsonl (CityJSON Text Sequences, tiles)")->required();
+  app.add_option("--planes", planes, "detect (region growing, default) or the name of an int point property giving the plane of each point (scenes only)");
+  app.add_option("--classes", classes, "ground and building classes of a classified input, as GROUND[,...]:BUILDING[,...] (default 2:6)");
+  app.add_option("--footprints", footprints_file, "GeoJSON polygons: one building per footprint, made of the building points inside it");
+  app.add_option("--threads", threads, "threads modelling the buildings of a tile, 0 for all cores (default)");
   app.add_option("--lambda1", lambda1, "weight of the concurrency term of the simplification, default 0.5");
   app.add_option("--lambda2", lambda2, "weight of the orthogonality term, default 5");
   app.add_option("--epsilon", epsilon, "longest edge to collapse in the simplification, input units (default: 1% of the half-diagonal)");
@@ -105,50 +403,31 @@ int main(int argc, char** argv)
   app.add_flag("--json", json, "print one line of JSON statistics");
   CLI11_PARSE(app, argc, argv);
   try {
-    if(!(ends_with(output, ".off") || ends_with(output, ".ply") || ends_with(output, ".obj") || ends_with(output, ".city.json")))
-      throw std::runtime_error("OUTPUT must end in .off, .ply, .obj or .city.json: " + output);
-    const Point_set points = read_points(input);
-    Mesh model;
-    const auto np = PPS::parameters::concurrency_weight(
+    if(!(ends_with(output, ".off") || ends_with(output, ".ply") || ends_with(output, ".obj") ||
+         ends_with(output, ".city.json") || ends_with(output, ".city.jsonl")))
+      throw std::runtime_error("OUTPUT must end in .off, .ply, .obj, .city.json or .city.jsonl: " + output);
+    if(threads < 0) throw std::runtime_error("--threads must be >= 0");
+    const auto [ground_classes, building_classes] = parse_classes(classes);
+    const std::vector<Polygon_with_holes> footprints = footprints_file.empty() ? std::vector<Polygon_with_holes>()
+                                                                               : read_footprints(footprints_file);
+    const auto base = PPS::parameters::concurrency_weight(
       lambda1, PPS::parameters::orthogonality_weight(lambda2, PPS::parameters::walls_at_facades(!walls_at_eaves)));
-    const PPS::LOD2_report report = epsilon > 0 ? reconstruct(points, planes, model, PPS::parameters::collapse_distance(epsilon, np))
-                                                : reconstruct(points, planes, model, np);
-    write_model(model, output);
+    const bool tile_input = ends_with(input, ".las") || ends_with(input, ".laz") || !footprints.empty();
+    Tile tile;
+    if(tile_input || ends_with(input, ".ply")) tile = read_tile(input);
+    auto run = [&](const auto& np) {
+      const auto city_np = PPS::parameters::ground_classes(
+        ground_classes, PPS::parameters::building_classes(building_classes, PPS::parameters::number_of_threads(threads, np)));
+      if(tile.has_classes || !footprints.empty())
+        return reconstruct_city(tile, footprints, output, city_np.point_map(Tile_position_map()));
+      return reconstruct_scene(input, planes, output, np);
+    };
+    nlohmann::json j = epsilon > 0 ? run(PPS::parameters::collapse_distance(epsilon, base)) : run(base);
     rusage usage;
     getrusage(RUSAGE_SELF, &usage);
-    if(json) {
-      nlohmann::json j;
-      j["points"] = report.points;
-      j["planes"] = report.planes;
-      j["roof_planes"] = report.roof_planes;
-      j["segments"] = report.segments;
-      j["facade_segments"] = report.facade_segments;
-      j["cells_before"] = report.cells_before;
-      j["cells_after"] = report.cells_after;
-      j["buildings"] = report.buildings;
-      j["faces"] = report.faces;
-      j["roof_faces"] = report.roof_faces;
-      j["wall_faces"] = report.wall_faces;
-      j["closed"] = report.closed;
-      j["bounds_volume"] = report.bounds_volume;
-      j["repaired_buildings"] = report.repaired_buildings;
-      j["rms_m"] = report.rms_distance;
-      j["max_m"] = report.maximum_distance;
-      j["measured_points"] = report.measured_points;
-      j["planes_s"] = report.planes_seconds;
-      j["segments_s"] = report.segments_seconds;
-      j["partition_s"] = report.partition_seconds;
-      j["simplification_s"] = report.simplification_seconds;
-      j["lift_s"] = report.lift_seconds;
-      j["extrusion_s"] = report.extrusion_seconds;
-      j["total_s"] = report.seconds;
-      j["peak_rss_mb"] = double(usage.ru_maxrss) / 1024.0;
-      std::cout << j.dump() << std::endl;
-    } else {
-      std::cout << report.buildings << " buildings, " << report.faces << " faces ("
-                << (report.closed ? "closed" : "NOT closed") << "), RMS distance " << report.rms_distance
-                << "; model written to " << output << std::endl;
-    }
+    j["peak_rss_mb"] = double(usage.ru_maxrss) / 1024.0;
+    if(json) std::cout << j.dump() << std::endl;
+    else std::cout << j["buildings"] << " buildings; model written to " << output << std::endl;
   } catch(const std::exception& e) {
     std::cerr << "lod2_reconstruct: error: " << e.what() << std::endl;
     return 1;

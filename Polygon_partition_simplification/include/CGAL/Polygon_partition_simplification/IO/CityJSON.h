@@ -6,6 +6,8 @@
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
+#include <CGAL/Polygon_partition_simplification/City_building.h>
+#include <CGAL/Polygon_partition_simplification/internal/CityJSON_buildings.h>
 #include <CGAL/Polygon_partition_simplification/internal/CityJSON_model.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -16,6 +18,7 @@
 #include <ostream>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_partition_simplification {
@@ -98,6 +101,77 @@ bool write_CityJSON(const std::string& file_name, const Surface_mesh<Point>& mes
     return false;
   }
   return true;
+}
+
+/*!
+\ingroup PkgPolygonPartitionSimplificationRef
+
+writes the buildings of `lod2_city_reconstruction()` to a CityJSON 1.1 file, as 3DBAG publishes
+its buildings: one `Building` city object per building, named `"building_<id>"`, whose
+geometries are its LoD 1.2 block and, when it has one, its LoD 2.2 solid (each a `Solid` of one
+shell with semantic surfaces), and whose attributes are `status` (`"lod22"` or
+`"lod12_fallback"`), `reason` (when the LoD 2.2 solid is missing), `points`, `h_ground`,
+`h_50p`, `h_70p`, `h_max` and, with an LoD 2.2 solid, `rms_m` (see `City_building`). The
+vertices are shared by all buildings and written as integers, as by the writer of one mesh.
+
+\param os the output stream
+\param buildings the buildings
+\param np optional named parameters: `stream_precision` (the number of decimals, 3 by default)
+\returns `true` if the stream is good after writing
+\throws Input_error, and writes nothing, on a non-finite vertex or an invalid `stream_precision`
+*/
+template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool write_CityJSON(std::ostream& os, const std::vector<City_building<Point>>& buildings,
+                    const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const internal::CityJSON_transform t = internal::CityJSON_transform_of(buildings, internal::CityJSON_decimals(np));
+  internal::CityJSON_vertex_pool pool;
+  std::string text = internal::CityJSON_header(t) + "\n\"CityObjects\":{";
+  for(std::size_t b = 0; b < buildings.size(); ++b) {
+    text += b ? ",\n" : "\n";
+    internal::append_CityJSON_building(text, buildings[b], t, pool);
+  }
+  text += "\n},\n";
+  internal::append_CityJSON_vertices(text, pool, "\n");
+  text += "\n]}\n";
+  os.write(text.data(), static_cast<std::streamsize>(text.size()));
+  return os.good();
+}
+
+/*!
+\ingroup PkgPolygonPartitionSimplificationRef
+
+writes the buildings of `lod2_city_reconstruction()` as CityJSON Text Sequences
+(https://www.cityjson.org/specs/1.1.3/#text-sequences-and-streaming-with-cityjsonfeature): a
+first line holding the `CityJSON` object with the transform and no city object, then one line
+per building, a `CityJSONFeature` with the `Building` that `write_CityJSON()` writes and its own
+vertices; each line is written when it is made, so that large tiles stream.
+
+\param os the output stream
+\param buildings the buildings
+\param np optional named parameters: `stream_precision` (the number of decimals, 3 by default)
+\returns `true` if the stream is good after writing
+\throws Input_error, and writes nothing, on a non-finite vertex or an invalid `stream_precision`
+*/
+template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool write_CityJSON_sequence(std::ostream& os, const std::vector<City_building<Point>>& buildings,
+                             const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const internal::CityJSON_transform t = internal::CityJSON_transform_of(buildings, internal::CityJSON_decimals(np));
+  std::string line = internal::CityJSON_header(t) + "\"CityObjects\":{},\"vertices\":[]}\n";
+  os.write(line.data(), static_cast<std::streamsize>(line.size()));
+  for(const auto& building : buildings) {
+    internal::CityJSON_vertex_pool pool;
+    line = "{\"type\":\"CityJSONFeature\",\"id\":";
+    internal::append_JSON_string(line, "building_" + std::to_string(building.id));
+    line += ",\"CityObjects\":{";
+    internal::append_CityJSON_building(line, building, t, pool);
+    line += "},";
+    internal::append_CityJSON_vertices(line, pool, "");
+    line += "]}\n";
+    os.write(line.data(), static_cast<std::streamsize>(line.size()));
+  }
+  return os.good();
 }
 
 } // namespace IO

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/lod12_block_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/solid_defect_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/split_into_buildings_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/triangulate_non_planar_faces_3.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/exceptions.h>
@@ -145,10 +146,15 @@ City_building<Point> model_building(const Classified_points<Kernel>& tile, const
     Input input(std::move(points), std::move(normals), settings);
     Surface_mesh<Point> model;
     result.report = reconstruct_lod2_from_input(input, model, np, total);
+    // faces bent by the heights merged at their corners become triangles, as val3dity wants
+    // planar faces
+    const Solid_tolerances tolerances;
     if(result.report.buildings != 1)
       result.reason = "the LOD2 pipeline made " + std::to_string(result.report.buildings) + " solids, not one";
+    else if(!triangulate_non_planar_faces(model, 0.5 * tolerances.planarity))
+      result.reason = "a bent face cannot be triangulated";
     else
-      result.reason = solid_defect(model);
+      result.reason = solid_defect(model, tolerances);
     if(result.reason.empty()) {
       result.lod22 = std::move(model);
       result.status = Building_model_status::LOD22;
