@@ -22,6 +22,7 @@
 #include <CGAL/Lex_optimal_chains/IO/read_las_points.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
 #include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/lod2_building_reconstruction.h>
 #include <CGAL/lod2_city_reconstruction.h>
 
@@ -136,7 +137,9 @@ static bool read_classes(const Point_set& points, std::vector<int>& classes)
 static Tile read_tile(const std::string& input)
 {
   Tile tile;
-  if(ends_with(input, ".las") || ends_with(input, ".laz")) {
+  if(ends_with(input, ".laz"))
+    throw std::runtime_error("compressed LAS (LAZ) is not supported: decompress it first (laszip, or pdal translate in.laz out.las): " + input);
+  if(ends_with(input, ".las")) {
     try {
       CGAL::Lex_optimal_chains::IO::for_each_las_record<K::Point_3>(input, [&](const K::Point_3& p, int c) {
         tile.points.push_back({p, CGAL::NULL_VECTOR, c});
@@ -264,6 +267,10 @@ static void write_city(const std::vector<City_building>& buildings, const std::s
     std::ofstream out(temporary, std::ios::binary);
     written = (ends_with(output, ".city.json") ? PPS::IO::write_CityJSON(out, buildings)
                                                 : PPS::IO::write_CityJSON_sequence(out, buildings)) && out.good();
+  } else if(ends_with(output, ".ply")) { // CGAL's PLY writer of a Surface_mesh keeps the int property f:building
+    std::ofstream out(temporary, std::ios::binary);
+    CGAL::IO::set_binary_mode(out);
+    written = CGAL::IO::write_PLY(out, best_models(buildings)) && out.good();
   } else {
     const std::string named = temporary + output.substr(output.rfind('.'));
     Mesh all = best_models(buildings);
