@@ -5,6 +5,7 @@
 #                                     LiDAR), real scans from libcgal-demo, and simplify the
 #                                     kinetic partition of 25 synthetic building footprints, and
 #                                     build the LOD2 model of building.ply (a scan from libcgal-demo)
+#                                     and of the buildings of the labelled tile b9_training.ply
 #   bash scripts/quickstart.sh test   same set-up plus Qt5 and Xvfb, then build and run all tests
 #                                     with ctest, the headless tests of the demo plugins included
 #   bash scripts/quickstart.sh demo   same set-up, builds CGAL's Polyhedron demo with the plugins
@@ -52,10 +53,13 @@ if [ "$mode" = run ]; then
     build/cgal-data/data/points_3/building.ply results/building_lod2.city.json --planes segment_index --json
   ./build/examples/Polygon_partition_simplification/lod2_reconstruct \
     build/cgal-data/data/points_3/building.ply results/building_lod2.off --planes segment_index
+  ./build/examples/Polygon_partition_simplification/lod2_reconstruct \
+    build/cgal-data/data/points_3/b9_training.ply results/b9_training_lod2.city.json --classes 0:2 --json
   echo "The reconstructed surfaces are in $(pwd)/results/: kitten_closed.off (closed surface)" \
        "and b9_training_open.off (terrain bounded by its footprint); the simplified partition of" \
        "25 synthetic footprints: footprints_25_simplified.geojson (cells) and .svg (before/after);" \
-       "the LOD2 model of building.ply: building_lod2.city.json (CityJSON 1.1) and building_lod2.off"
+       "the LOD2 model of building.ply: building_lod2.city.json (CityJSON 1.1) and building_lod2.off;" \
+       "the buildings of the labelled aerial tile b9_training.ply: b9_training_lod2.city.json (LoD 1.2 and 2.2)"
 elif [ "$mode" = demo ]; then
   cmake -S demo -B build-demo -DCMAKE_BUILD_TYPE=Release
   cmake --build build-demo -j"$jobs" --target urban_demo

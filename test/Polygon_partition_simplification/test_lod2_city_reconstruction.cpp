@@ -111,7 +111,9 @@ void test_city_without_footprints()
   const T::Two_way_distances d = distances_to_truth(one, city);
   std::cout << "  truth to model: rms " << d.truth_to_model.rms << " max " << d.truth_to_model.max
             << "; model to truth: rms " << d.model_to_truth.rms << " max " << d.model_to_truth.max << std::endl;
-  assert(d.truth_to_model.rms < 0.3 && d.model_to_truth.rms < 0.3);
+  // without footprints, walls stand at the eaves where no facade point was seen, and a terraced
+  // pair is one block
+  assert(d.truth_to_model.rms < 0.2 && d.model_to_truth.rms < 0.2);
   assert(d.truth_to_model.max < 3 && d.model_to_truth.max < 3);
 
   // the same CityJSON with 2 threads and with the points shuffled
@@ -156,7 +158,9 @@ void test_city_with_footprints()
   const T::Two_way_distances d = distances_to_truth(buildings, city);
   std::cout << "  truth to model: rms " << d.truth_to_model.rms << " max " << d.truth_to_model.max
             << "; model to truth: rms " << d.model_to_truth.rms << " max " << d.model_to_truth.max << std::endl;
-  assert(d.truth_to_model.rms < 0.3 && d.model_to_truth.rms < 0.3);
+  // walls on the footprints: no eave moves them, the terraced houses are apart
+  assert(d.truth_to_model.rms < 0.1 && d.model_to_truth.rms < 0.1);
+  assert(d.truth_to_model.max < 1 && d.model_to_truth.max < 1);
 }
 
 // solids made wrong on purpose are refused by solid_defect(), and a box is accepted

@@ -22,7 +22,7 @@ namespace CGAL {
 detects the planes of a building scene (first stage of the LOD2 pipeline, section 3.2.1 of the
 thesis): from `plane_index_map` when it is given (for instance the `segment_index` property of
 CGAL's `points_3/building.ply`), otherwise with CGAL's region growing on the k-nearest-neighbour
-graph (`Shape_detection`, normals estimated by `jet_estimate_normals()` when `normal_map` is not
+graph (`Shape_detection`, normals estimated by `pca_estimate_normals()` when `normal_map` is not
 given). The planes are regularized by CGAL's `regularize_planes()` (parallelism, orthogonality and
 coplanarity within 5 degrees; not its symmetry about the vertical, which tilts flat roofs and the
 ground toward the slopes of pitched roofs), then those within 10 degrees of vertical are made
@@ -126,7 +126,7 @@ in the planes of `detect_building_planes_3()`, `std::size_t(-1)` for walls and f
   \cgalParamNBegin{normal_map}
     \cgalParamDescription{a property map associating normals to the elements of `points`,
                           used by the region growing}
-    \cgalParamDefault{normals estimated by `jet_estimate_normals()` (12 neighbours)}
+    \cgalParamDefault{normals estimated by `pca_estimate_normals()` (12 neighbours)}
   \cgalParamNEnd
   \cgalParamNBegin{plane_index_map}
     \cgalParamDescription{a property map associating to the elements of `points` the index of

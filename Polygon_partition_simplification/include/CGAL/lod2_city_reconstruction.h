@@ -31,7 +31,8 @@ in grid cells).
 <b>One building.</b> The pipeline of `lod2_building_reconstruction()` runs on the building's
 points and the ground points within 10 spacings of their bounding box, with the named
 parameters of this call (the lengths left to their defaults are set from the spacing of each
-building). Its model is checked as val3dity checks a solid (vertices snapped at 1 mm; every
+building). Faces bent by the heights merged at their corners are split into triangles, and
+vertices closer than 1 mm are merged (as the CityJSON writers merge them). Its model is checked as val3dity checks a solid (vertices snapped at 1 mm; every
 face planar within 1 cm, of nonzero area, without a repeated vertex; one closed 2-manifold
 shell, without self-intersection, oriented outwards). The LoD 1.2 block is the footprint (given,
 or the floor of the LoD 2.2 solid, or the convex hull of the points when neither gives a valid
@@ -72,8 +73,11 @@ the number of threads nor the order of the points.
   \cgalParamNEnd
   \cgalParamNBegin{footprints}
     \cgalParamDescription{the footprints of the buildings, as 3DBAG's BAG footprints or
-                          OpenStreetMap give them; a footprint holding fewer than 50 building
-                          points gives no building (counted in `LOD2_city_report::footprints_without_points`)}
+                          OpenStreetMap give them: the edges of a building's footprint are facade
+                          segments of its partition and no roof stands on a cell whose bulk is
+                          outside it, so its walls stand on it; a footprint holding fewer than 50
+                          building points gives no building (counted in
+                          `LOD2_city_report::footprints_without_points`)}
     \cgalParamType{a random access range of `Polygon_with_holes_2`}
     \cgalParamDefault{none: buildings found by connectivity}
   \cgalParamNEnd

@@ -143,18 +143,23 @@ City_building<Point> model_building(const Classified_points<Kernel>& tile, const
   try {
     CGAL::Real_timer total;
     total.start();
-    Input input(std::move(points), std::move(normals), settings);
+    LOD2_settings own_settings = settings;
+    if(job.footprint != nullptr) own_settings.footprint = *job.footprint;
+    Input input(std::move(points), std::move(normals), own_settings);
     Surface_mesh<Point> model;
     result.report = reconstruct_lod2_from_input(input, model, np, total);
     // faces bent by the heights merged at their corners become triangles, as val3dity wants
-    // planar faces
+    // planar faces; vertices closer than the snapping tolerance are merged, as the CityJSON
+    // writers merge them
     const Solid_tolerances tolerances;
     if(result.report.buildings != 1)
       result.reason = "the LOD2 pipeline made " + std::to_string(result.report.buildings) + " solids, not one";
     else if(!triangulate_non_planar_faces(model, 0.5 * tolerances.planarity))
       result.reason = "a bent face cannot be triangulated";
-    else
+    else {
+      snap_solid(model, tolerances.snap); // the vertices as written, slivers gone
       result.reason = solid_defect(model, tolerances);
+    }
     if(result.reason.empty()) {
       result.lod22 = std::move(model);
       result.status = Building_model_status::LOD22;

@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/detect_building_planes_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/label_cells_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/triangulate_rings_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 #include <CGAL/kinetic_partition_2.h>
 #include <CGAL/simplify_polygon_partition_2.h>
@@ -25,6 +26,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -34,6 +36,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <set>
 #include <string>
 #include <type_traits>
@@ -49,6 +52,9 @@ struct LOD2_settings
   Plane_detection_settings planes;
   Lift_settings lift;
   double height_tolerance = 0;
+  /// a footprint (outer ring counterclockwise, holes clockwise), empty for none: its edges are
+  /// facade segments of the partition and no roof stands outside it
+  std::vector<std::vector<std::array<double, 2>>> footprint;
 
   Segment_extraction_settings segments_for(double spacing, double maximum_distance) const
   {
@@ -233,6 +239,68 @@ void measure_distances(const std::vector<typename Kernel::Point_3>& points, cons
   if(report.measured_points > 0) report.rms_distance = std::sqrt(sum / double(report.measured_points));
 }
 
+/// the edges of the footprint added to the segments, as facades
+template <class Kernel>
+void add_footprint_segments(const std::vector<std::vector<std::array<double, 2>>>& footprint,
+                            std::vector<Building_segment_2<Kernel>>& segments)
+{
+  for(const auto& ring : footprint)
+    for(std::size_t i = 0; i < ring.size(); ++i) {
+      const auto& p = ring[i];
+      const auto& q = ring[(i + 1) % ring.size()];
+      Building_segment_2<Kernel> s;
+      s.segment = typename Kernel::Segment_2(typename Kernel::Point_2(p[0], p[1]), typename Kernel::Point_2(q[0], q[1]));
+      s.is_facade = true;
+      segments.push_back(s);
+    }
+}
+
+/// true when (x, y) is inside the footprint (inside its outer ring and outside its holes)
+inline bool is_inside_footprint(const std::vector<std::vector<std::array<double, 2>>>& footprint, double x, double y)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  for(std::size_t r = 0; r < footprint.size(); ++r) {
+    std::vector<K::Point_2> ring;
+    for(const auto& p : footprint[r]) ring.emplace_back(p[0], p[1]);
+    const bool in = CGAL::bounded_side_2(ring.begin(), ring.end(), K::Point_2(x, y)) != CGAL::ON_UNBOUNDED_SIDE;
+    if(in != (r == 0)) return false;
+  }
+  return true;
+}
+
+/// a roof label costs +infinity on the cells whose largest triangle has its centroid outside
+/// the footprint (the simplification may move the footprint's lines a little: a cell is inside
+/// by its bulk)
+inline void forbid_roofs_outside(const Cell_arrangement_2& cells,
+                                 const std::vector<std::vector<std::array<double, 2>>>& footprint,
+                                 std::vector<std::vector<double>>& cost)
+{
+  for(std::size_t c = 0; c < cells.number_of_cells(); ++c) {
+    std::vector<std::vector<Ring_corner>> rings;
+    std::vector<std::array<double, 2>> corners;
+    for(const auto& ring : cells.rings[c]) {
+      rings.emplace_back();
+      for(const auto& p : ring) {
+        rings.back().push_back({corners.size(), p.x(), p.y()});
+        corners.push_back({{p.x(), p.y()}});
+      }
+    }
+    double largest = -1, x = 0, y = 0;
+    for(const auto& t : triangulate_rings(rings)) {
+      const auto &a = corners[t[0]], &b = corners[t[1]], &d = corners[t[2]];
+      const double area = std::abs((b[0] - a[0]) * (d[1] - a[1]) - (d[0] - a[0]) * (b[1] - a[1]));
+      if(area > largest) {
+        largest = area;
+        x = (a[0] + b[0] + d[0]) / 3;
+        y = (a[1] + b[1] + d[1]) / 3;
+      }
+    }
+    if(largest < 0 || is_inside_footprint(footprint, x, y)) continue;
+    for(std::size_t l = 0; l < cost[c].size(); ++l)
+      if(l != Height_functions::ground_label) cost[c][l] = std::numeric_limits<double>::infinity();
+  }
+}
+
 /// the labeled cells extruded into `mesh`
 template <class Kernel, class PolygonWithHolesRange, class Point>
 void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const Building_planes_3<Kernel>& planes,
@@ -262,8 +330,9 @@ void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const
     if(s.is_facade) facades.push_back(s.segment);
   const Height_functions heights(planes);
   const std::vector<Lift_edge> edges = lift_edges(arrangement, facades, settings.lift);
-  const std::vector<std::size_t> labels =
-    label_cells(arrangement, edges, lift_data_term(arrangement, evidence, heights, settings.lift), heights);
+  std::vector<std::vector<double>> cost = lift_data_term(arrangement, evidence, heights, settings.lift);
+  if(!settings.footprint.empty()) forbid_roofs_outside(arrangement, settings.footprint, cost);
+  const std::vector<std::size_t> labels = label_cells(arrangement, edges, std::move(cost), heights);
   report.lift_seconds = timer.time();
   timer.reset();
   Building_extrusion_3 extrusion(arrangement, labels, heights, settings.height_tolerance);
@@ -342,7 +411,8 @@ LOD2_report reconstruct_lod2_from_input(Input& input, CGAL::Surface_mesh<Point>&
   complete_settings(input.settings, planes.spacing);
   report.planes_seconds = timer.time();
   timer.reset();
-  const auto segments = building_segments<Kernel>(input.points, planes, input.settings.segments_for(planes));
+  auto segments = building_segments<Kernel>(input.points, planes, input.settings.segments_for(planes));
+  add_footprint_segments(input.settings.footprint, segments);
   const std::vector<typename Kernel::Segment_2> segments_2 = distinct_segments(segments);
   for(const auto& s : segments) report.facade_segments += s.is_facade ? 1 : 0;
   report.segments = segments_2.size();

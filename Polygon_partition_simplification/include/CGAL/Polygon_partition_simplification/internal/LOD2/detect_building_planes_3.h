@@ -13,7 +13,7 @@
 #include <CGAL/Shape_detection/Region_growing/Region_growing_on_point_set.h>
 #include <CGAL/Shape_regularization/regularize_planes.h>
 #include <CGAL/compute_average_spacing.h>
-#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/pca_estimate_normals.h>
 #include <CGAL/linear_least_squares_fitting_3.h>
 #include <CGAL/property_map.h>
 
@@ -74,7 +74,7 @@ std::vector<std::vector<std::size_t>> regions_of_region_growing(const std::vecto
   if(normals.size() == points.size()) {
     for(std::size_t i = 0; i < points.size(); ++i) range[i].second = normals[i];
   } else {
-    CGAL::jet_estimate_normals<CGAL::Sequential_tag>(
+    CGAL::pca_estimate_normals<CGAL::Sequential_tag>(
       range, settings.neighbors, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   }
   namespace RG = CGAL::Shape_detection;

@@ -6,6 +6,8 @@
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
+#include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -38,10 +40,12 @@ struct Snapped_soup
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::vector<std::size_t>> faces;
+  std::vector<std::size_t> source; ///< the face of the mesh of each face
 };
 
 /// the faces of `mesh` on the points snapped to a grid of side `snap` (vertices in one grid cell
-/// are one), with repeated consecutive vertices removed
+/// are one, at the first of them), with repeated consecutive vertices removed; the faces left
+/// with fewer than 3 vertices are dropped, as the CityJSON writers drop them
 template <class Point>
 Snapped_soup snapped_soup(const Surface_mesh<Point>& mesh, double snap)
 {
@@ -59,9 +63,39 @@ Snapped_soup snapped_soup(const Surface_mesh<Point>& mesh, double snap)
       if(face.empty() || face.back() != inserted.first->second) face.push_back(inserted.first->second);
     }
     while(face.size() > 1 && face.back() == face.front()) face.pop_back();
+    if(face.size() < 3) continue;
     soup.faces.push_back(std::move(face));
+    soup.source.push_back(std::size_t(f));
   }
   return soup;
+}
+
+/// `mesh` made of its snapped soup (vertices closer than `snap` merged, collapsed faces
+/// dropped), its face properties `f:surface_type`, `f:building` and `f:plane` kept; unchanged
+/// when the soup is not a polygon mesh (then `solid_defect()` says why)
+template <class Point>
+void snap_solid(Surface_mesh<Point>& mesh, double snap)
+{
+  using Mesh = Surface_mesh<Point>;
+  using Face = typename Mesh::Face_index;
+  const Snapped_soup soup = snapped_soup(mesh, snap);
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.faces)) return;
+  std::vector<Point> points;
+  for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
+  Mesh snapped;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.faces, snapped);
+  auto copy = [&](const char* name, auto value) {
+    using T = decltype(value);
+    const auto from = mesh.template property_map<Face, T>(name);
+    if(!from.second) return;
+    auto to = snapped.template add_property_map<Face, T>(name, value).first;
+    std::size_t i = 0;
+    for(Face f : snapped.faces()) to[f] = from.first[Face(typename Mesh::size_type(soup.source[i++]))];
+  };
+  copy("f:surface_type", Building_surface_type::WALL);
+  copy("f:building", std::size_t(0));
+  copy("f:plane", std::size_t(0));
+  mesh = std::move(snapped);
 }
 
 /// why the face `face` of `soup` is not a valid polygon (empty when it is): it repeats a vertex,

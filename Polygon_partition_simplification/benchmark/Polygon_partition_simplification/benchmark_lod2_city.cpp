@@ -1,0 +1,144 @@
+// benchmark_lod2_city [BUILDINGS...]: lod2_city_reconstruction() on synthetic classified tiles of
+// the given numbers of buildings (synthetic_city.h: gable, hip, L, flat, stepped, courtyard,
+// terraced, a building without wall points, trees; 10 points per m2, 3 cm noise), on 1 and 2
+// threads in one run: the time per input point, the ratio of the two times, whether the two
+// CityJSON outputs are byte-identical, valid buildings and fallbacks, the distances of the
+// models to the truth both ways (mean and largest, sampled), and the peak memory.
+
+#include "synthetic_city.h"
+
+#include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/lod2_city_reconstruction.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace PPS = CGAL::Polygon_partition_simplification;
+namespace T = PPS::test;
+using Building = PPS::City_building<T::Point_3>;
+
+struct City_point_map
+{
+  using key_type = T::City_sample; using value_type = T::Point_3; using reference = const T::Point_3&;
+  using category = boost::readable_property_map_tag;
+  friend reference get(City_point_map, const T::City_sample& s) { return s.point; }
+};
+struct City_class_map
+{
+  using key_type = T::City_sample; using value_type = int; using reference = int;
+  using category = boost::readable_property_map_tag;
+  friend int get(City_class_map, const T::City_sample& s) { return s.classification; }
+};
+
+static PPS::LOD2_city_report run(const T::City& city, int threads, std::vector<Building>& buildings)
+{
+  return CGAL::lod2_city_reconstruction(
+    city.samples, buildings,
+    PPS::parameters::classification_map(City_class_map(), PPS::parameters::number_of_threads(threads))
+      .point_map(City_point_map()));
+}
+
+// the same with the true footprints given
+static PPS::LOD2_city_report run_with_footprints(const T::City& city, std::vector<Building>& buildings)
+{
+  std::vector<CGAL::Polygon_with_holes_2<T::Kernel>> footprints;
+  for(std::size_t b = 0; b < city.footprints.size(); ++b) {
+    footprints.emplace_back(CGAL::Polygon_2<T::Kernel>(city.footprints[b].begin(), city.footprints[b].end()));
+    for(const auto& hole : city.footprint_holes[b]) footprints.back().add_hole(CGAL::Polygon_2<T::Kernel>(hole.begin(), hole.end()));
+  }
+  return CGAL::lod2_city_reconstruction(
+    city.samples, buildings,
+    PPS::parameters::footprints(footprints, PPS::parameters::classification_map(City_class_map(), PPS::parameters::number_of_threads(1)))
+      .point_map(City_point_map()));
+}
+
+static std::string city_json(const std::vector<Building>& buildings)
+{
+  std::ostringstream out;
+  PPS::IO::write_CityJSON(out, buildings);
+  return out.str();
+}
+
+// mean distances both ways between the models (LoD 2.2, or LoD 1.2 on fallback) and the truth
+static void print_distances(const std::vector<Building>& buildings, const T::City& city)
+{
+  T::Mesh model, truth;
+  for(const Building& b : buildings)
+    model.join(b.status == PPS::Building_model_status::LOD22 ? b.lod22 : b.lod12);
+  for(const T::Building& b : city.buildings) truth.join(T::truth_mesh(b));
+  const T::Distance_to_mesh to_model(model), to_truth(truth);
+  auto mean_max = [](const std::vector<T::Point_3>& samples, const T::Distance_to_mesh& surface) {
+    double sum = 0, max = 0;
+    for(const T::Point_3& p : samples) {
+      const double d = surface(p);
+      sum += d;
+      max = std::max(max, d);
+    }
+    return std::make_pair(sum / double(samples.size()), max);
+  };
+  const auto t2m = mean_max(T::sample_triangles(to_truth.triangles(), 4), to_model);
+  const auto m2t = mean_max(T::sample_triangles(to_model.triangles(), 4), to_truth);
+  // the buildings farthest from the other surface, each way
+  std::vector<std::pair<double, std::string>> worst;
+  for(std::size_t b = 0; b < city.buildings.size(); ++b) {
+    const T::Distance_to_mesh one(T::truth_mesh(city.buildings[b]));
+    worst.push_back({mean_max(T::sample_triangles(one.triangles(), 4), to_model).second,
+                     "truth " + std::to_string(b) + " (" + city.kinds[b] + ")"});
+  }
+  for(const Building& b : buildings) {
+    const T::Distance_to_mesh one(b.status == PPS::Building_model_status::LOD22 ? b.lod22 : b.lod12);
+    worst.push_back({mean_max(T::sample_triangles(one.triangles(), 4), to_truth).second, "model " + std::to_string(b.id)});
+  }
+  std::sort(worst.rbegin(), worst.rend());
+  std::cout << "  farthest:";
+  for(std::size_t i = 0; i < std::min<std::size_t>(6, worst.size()); ++i)
+    std::cout << " " << worst[i].second << " " << worst[i].first << " m;";
+  std::cout << std::endl;
+  std::cout << "  truth to model: mean " << t2m.first << " m, max " << t2m.second << " m; model to truth: mean "
+            << m2t.first << " m, max " << m2t.second << " m" << std::endl;
+}
+
+int main(int argc, char** argv)
+{
+  std::vector<std::size_t> sizes;
+  for(int i = 1; i < argc; ++i) sizes.push_back(std::size_t(std::atol(argv[i])));
+  if(sizes.empty()) sizes = {30, 120};
+  std::cout << "buildings | points | modelled | valid | LoD 1.2 only | 1 thread (s) | us/point | 2 threads (s) | ratio | identical" << std::endl;
+  for(std::size_t n : sizes) {
+    T::City_options options;
+    options.buildings = n;
+    const T::City city = T::make_city(options);
+    std::vector<Building> one, two;
+    const PPS::LOD2_city_report r1 = run(city, 1, one);
+    const PPS::LOD2_city_report r2 = run(city, 2, two);
+    std::cout << n << " | " << r1.points << " | " << r1.buildings << " | " << r1.buildings_valid << " | "
+              << r1.buildings_lod12_fallback << " | " << r1.seconds << " | " << 1e6 * r1.seconds / double(r1.points)
+              << " | " << r2.seconds << " | " << r2.seconds / r1.seconds << " | "
+              << (city_json(one) == city_json(two) ? "yes" : "NO") << std::endl;
+    std::cout << "  stages (1 thread, summed): split " << r1.split_seconds << " planes " << r1.planes_seconds << " segments "
+              << r1.segments_seconds << " partition " << r1.partition_seconds << " simplification " << r1.simplification_seconds
+              << " lift " << r1.lift_seconds << " extrusion " << r1.extrusion_seconds << " validation " << r1.validation_seconds
+              << std::endl;
+    for(const Building& b : one)
+      if(!b.reason.empty()) std::cout << "  building " << b.id << ": " << b.reason << std::endl;
+    print_distances(one, city);
+    std::vector<Building> with_footprints;
+    const PPS::LOD2_city_report r3 = run_with_footprints(city, with_footprints);
+    std::cout << "  with the footprints, 1 thread: " << r3.buildings << " buildings, " << r3.buildings_valid << " valid, "
+              << r3.seconds << " s" << std::endl;
+    for(const Building& b : with_footprints)
+      if(!b.reason.empty()) std::cout << "  building " << b.id << ": " << b.reason << std::endl;
+    print_distances(with_footprints, city);
+  }
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  std::cout << "peak memory: " << double(usage.ru_maxrss) / 1024.0 << " MB" << std::endl;
+  return 0;
+}
