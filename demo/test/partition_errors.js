@@ -10,8 +10,6 @@ run_test(function () {
     result.empty = attempt(function () { return pps.kineticPartition(empty) })
     var zero = checked(pps.loadSegments(OUT + "/zero_length.txt"))
     result.zero_length = attempt(function () { return pps.kineticPartition(zero) })
-    var duplicated = checked(pps.loadSegments(OUT + "/duplicated.txt"))
-    result.duplicated = attempt(function () { return pps.simplifyPartition(duplicated) })
 
     var segments = checked(pps.loadSegments(DATA + "/footprints_25.txt"))
     var kinetic = checked(pps.kineticPartition(segments))

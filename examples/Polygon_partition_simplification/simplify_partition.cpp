@@ -98,7 +98,8 @@ int main(int argc, char** argv)
     const std::vector<K::Segment_2> segments = PPS::IO::read_segments_2<K>(input);
 
     const auto t0 = std::chrono::steady_clock::now();
-    Partition partition = CGAL::kinetic_partition_2(segments);
+    PPS::Kinetic_partition_report kinetic_report;
+    Partition partition = CGAL::kinetic_partition_2(segments, PPS::parameters::report(&kinetic_report));
     const auto t1 = std::chrono::steady_clock::now();
     const Partition before = partition;
     const double scale = partition.frame().scale;
@@ -137,6 +138,8 @@ int main(int argc, char** argv)
     if(json) {
       nlohmann::json j;
       j["segments"] = segments.size();
+      j["equal_segments"] = kinetic_report.equal_segments;
+      j["overlapping_segments"] = kinetic_report.overlapping_segments;
       j["lines_before"] = stats.lines_before;
       j["lines_after"] = stats.lines_after;
       j["points_before"] = stats.points_before;

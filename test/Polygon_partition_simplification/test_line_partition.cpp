@@ -468,7 +468,11 @@ void test_bad_input()
   expect_error(C::EMPTY_INPUT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{}); });
   expect_error(C::NON_FINITE_COORDINATE, [&] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {nan, 1}}}); });
   expect_error(C::ZERO_LENGTH_SEGMENT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}, {{2, 2}, {2, 2}}}); });
-  expect_error(C::DUPLICATED_SEGMENT, [] { CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}, {{1, 1}, {0, 0}}}); });
+  { // a segment given twice is merged: the partition of the segment alone
+    const Partition twice = CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}, {{1, 1}, {0, 0}}});
+    const Partition once = CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}});
+    CHECK(twice.is_valid() && twice.number_of_cells() == 2 && twice.number_of_edges() == once.number_of_edges());
+  }
   expect_error(C::INVALID_PARAMETER, [] {
     CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}}, PPS::parameters::crossing_distance(-1.));
   });

@@ -7,6 +7,7 @@
 #include <CGAL/license/Polygon_partition_simplification.h>
 
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/Kinetic_partition_report.h>
 #include <CGAL/Polygon_partition_simplification/Line_partition_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Enclosing_rectangle_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Geom_traits_check.h>
@@ -43,6 +44,49 @@ struct Result_of_segments
   using type = Line_partition_2<Given>;
 };
 
+// The nearest doubles of the endpoints of `segments` (x0, y0, x1, y1 each), checked: an
+// Input_error says which segment is wrong. Nothing is modified.
+template <class SegmentRange, class GeomTraits>
+std::vector<std::array<double, 4>> checked_segments(const SegmentRange& segments, const GeomTraits& gt)
+{
+  const auto source = gt.construct_source_2_object();
+  const auto target = gt.construct_target_2_object();
+  const auto x_of = gt.compute_x_2_object();
+  const auto y_of = gt.compute_y_2_object();
+  std::vector<std::array<double, 4>> input;
+  for(const auto& s : segments) {
+    const std::array<double, 4> c{double_of(x_of(source(s))), double_of(y_of(source(s))),
+                                  double_of(x_of(target(s))), double_of(y_of(target(s)))};
+    const std::string which = "segment " + std::to_string(input.size());
+    for(double x : c)
+      if(!std::isfinite(x) || std::abs(x) > 1e100)
+        throw Input_error(Input_error_code::NON_FINITE_COORDINATE,
+                          which + " has a NaN, infinite or huge (beyond 1e100) coordinate");
+    if(c[0] == c[2] && c[1] == c[3])
+      throw Input_error(Input_error_code::ZERO_LENGTH_SEGMENT, which + " has zero length; remove it");
+    const double dx = c[2] - c[0], dy = c[3] - c[1];
+    if(!(dx * dx + dy * dy >= 1e-200))
+      throw Input_error(Input_error_code::ZERO_LENGTH_SEGMENT,
+                        which + " is too short (below 1e-100) for double precision; scale the input");
+    input.push_back(c);
+  }
+  if(input.empty()) throw Input_error(Input_error_code::EMPTY_INPUT, "no segment was given");
+  return input;
+}
+
+// The number of segments of `input` equal to another one (either way round).
+inline std::size_t number_of_equal_segments(const std::vector<std::array<double, 4>>& input)
+{
+  std::vector<std::array<double, 4>> sorted;
+  sorted.reserve(input.size());
+  for(std::array<double, 4> c : input) {
+    if(std::make_pair(c[2], c[3]) < std::make_pair(c[0], c[1])) c = {c[2], c[3], c[0], c[1]};
+    sorted.push_back(c);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  return std::size_t(sorted.end() - std::unique(sorted.begin(), sorted.end()));
+}
+
 } // namespace internal
 } // namespace Polygon_partition_simplification
 
@@ -62,6 +106,11 @@ each side moved outward by a margin (so the partition moves with the input under
 motions and scalings). Intersection points and arrival times are computed exactly and
 events are processed in exact time order, so the result is the exact kinetic partition of
 the input coordinates.
+
+Segments given twice (in either orientation) and collinear segments that overlap (share more
+than a point, after the snapping below) are merged: their union grows as one segment, and the
+fidelity metric of their line counts each of them. The named parameter `report` tells how many
+were merged.
 
 The partition's lines are the supporting lines of the segments (exactly collinear segments
 share one) and the four sides of the rectangle (marked `is_fixed`); the fidelity metric of a
@@ -117,7 +166,14 @@ constructions (`Exact_predicates_exact_constructions_kernel`): the result is the
                           a line)}
     \cgalParamType{`double`}
     \cgalParamDefault{\f$10^{-7}\f$ times the half-diagonal of the smallest enclosing rectangle
-                      of the segments}
+                      of the segments, or 16 units in the last place of their largest coordinate
+                      if that is larger}
+  \cgalParamNEnd
+  \cgalParamNBegin{report}
+    \cgalParamDescription{a pointer to a report that is filled with what was done to the
+                          segments: merged, moved, grown (`Polygon_partition_simplification::parameters`)}
+    \cgalParamType{`Polygon_partition_simplification::Kinetic_partition_report*`}
+    \cgalParamDefault{`nullptr` (no report)}
   \cgalParamNEnd
   \cgalParamNBegin{bounding_box_margin}
     \cgalParamDescription{margin added on each side of the enclosing rectangle, relative to its
@@ -128,23 +184,25 @@ constructions (`Exact_predicates_exact_constructions_kernel`): the result is the
 \cgalNamedParamsEnd
 
 \return the partition, in line representation: a `Line_partition_2<GT>`, with `GT` the type of
-`geom_traits`, or `K` by default. Its points are computed in double precision
-from its lines: two exact intersection points closer than the precision of doubles (segments
-on nearly identical lines farther apart than `collinearity_distance` that cross) can get the
-same coordinates, and the partition is then not valid (`Line_partition_2::is_valid()` says
-so, and `simplify_polygon_partition_2()` refuses it).
+`geom_traits`, or `K` by default. Its points are computed in double precision from its lines;
+points that would come closer than the rounding errors (in the normalized frame, or in input
+coordinates) to another point they are joined to, or to an edge they do not bound, are merged
+with it or put on it when the partition is built, so that features smaller than the precision
+of doubles (three nearly concurrent lines, rays meeting near the center of a star) do not make
+it invalid.
 Ends that meet at time 0 (segments sharing an endpoint) stop each other, so that corners
 stay corners. When a closed chain of such corners touches the rest of the partition at a
 single point (an "X" whose two lower ends are joined by a third segment; two squares sharing
 a corner), the cell around it would not be a simple polygon: the partition is then computed
 again with one or a few of these ends released, each going on from its corner, until it is
 valid (at most 16 propagations in all); when none of these is valid, the first partition is
-returned, and it is not valid.
+returned, and it is not valid (`Line_partition_2::is_valid()` says so, and
+`simplify_polygon_partition_2()` refuses it).
 
 \throws Polygon_partition_simplification::Input_error when `segments` is empty
-(`EMPTY_INPUT`), has a NaN, infinite or huge coordinate (`NON_FINITE_COORDINATE`), a segment
-of zero length or shorter than 1e-100 (`ZERO_LENGTH_SEGMENT`) or twice the same segment
-(`DUPLICATED_SEGMENT`), or when a parameter is out of range (`INVALID_PARAMETER`).
+(`EMPTY_INPUT`), has a NaN, infinite or huge coordinate (`NON_FINITE_COORDINATE`) or a segment
+of zero length or shorter than 1e-100 (`ZERO_LENGTH_SEGMENT`), or when a parameter is out of
+range (`INVALID_PARAMETER`).
 */
 template <class SegmentRange,
           class NamedParameters = parameters::Default_named_parameters>
@@ -169,10 +227,6 @@ kinetic_partition_2(const SegmentRange& segments,
   using PPS::Input_error;
   using PPS::Input_error_code;
   const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, internal_np::geom_traits));
-  const auto source = gt.construct_source_2_object();
-  const auto target = gt.construct_target_2_object();
-  const auto x_of = gt.compute_x_2_object();
-  const auto y_of = gt.compute_y_2_object();
 
   const std::size_t maximum_crossings = choose_parameter(
     get_parameter(np, PPS::internal_np::maximum_number_of_crossings), std::size_t(0));
@@ -189,42 +243,10 @@ kinetic_partition_2(const SegmentRange& segments,
   if(!default_collinearity && !(collinearity >= 0 && std::isfinite(collinearity)))
     throw Input_error(Input_error_code::INVALID_PARAMETER, "collinearity_distance must be finite and >= 0");
 
-  // Checks: nothing is modified, an error says which segment is wrong.
-  std::vector<std::array<double, 4>> input;
-  for(const Segment& s : segments) {
-    // the nearest doubles (a double as it is)
-    const std::array<double, 4> c{PPS::internal::double_of(x_of(source(s))), PPS::internal::double_of(y_of(source(s))),
-                                  PPS::internal::double_of(x_of(target(s))), PPS::internal::double_of(y_of(target(s)))};
-    const std::string which = "segment " + std::to_string(input.size());
-    for(double x : c)
-      if(!std::isfinite(x) || std::abs(x) > 1e100)
-        throw Input_error(Input_error_code::NON_FINITE_COORDINATE,
-                          which + " has a NaN, infinite or huge (beyond 1e100) coordinate");
-    if(c[0] == c[2] && c[1] == c[3])
-      throw Input_error(Input_error_code::ZERO_LENGTH_SEGMENT,
-                        which + " has zero length; remove it");
-    const double dx = c[2] - c[0], dy = c[3] - c[1];
-    if(!(dx * dx + dy * dy >= 1e-200))
-      throw Input_error(Input_error_code::ZERO_LENGTH_SEGMENT,
-                        which + " is too short (below 1e-100) for double precision; scale the input");
-    input.push_back(c);
-  }
-  if(input.empty())
-    throw Input_error(Input_error_code::EMPTY_INPUT, "no segment was given");
-  {
-    std::vector<std::pair<std::array<double, 4>, std::size_t>> sorted;
-    for(std::size_t i = 0; i < input.size(); ++i) {
-      std::array<double, 4> c = input[i];
-      if(std::make_pair(c[2], c[3]) < std::make_pair(c[0], c[1])) c = {c[2], c[3], c[0], c[1]};
-      sorted.emplace_back(c, i);
-    }
-    std::sort(sorted.begin(), sorted.end());
-    for(std::size_t i = 1; i < sorted.size(); ++i)
-      if(sorted[i].first == sorted[i - 1].first)
-        throw Input_error(Input_error_code::DUPLICATED_SEGMENT,
-                          "segments " + std::to_string(sorted[i - 1].second) + " and " +
-                            std::to_string(sorted[i].second) + " are the same; remove one");
-  }
+  const std::vector<std::array<double, 4>> input = PPS::internal::checked_segments(segments, gt);
+  Polygon_partition_simplification::Kinetic_partition_report report;
+  report.segments = input.size();
+  report.equal_segments = PPS::internal::number_of_equal_segments(input);
 
   std::vector<std::array<double, 2>> endpoints;
   for(const auto& c : input) { endpoints.push_back({c[0], c[1]}); endpoints.push_back({c[2], c[3]}); }
@@ -235,30 +257,29 @@ kinetic_partition_2(const SegmentRange& segments,
   std::array<typename EK::Point_2, 4> box;
   for(int k = 0; k < 4; ++k) box[k] = typename EK::Point_2(corners[k][0], corners[k][1]);
 
-  if(default_collinearity) collinearity = 1e-7 * half_diagonal;
+  if(default_collinearity) {
+    // 1e-7 half-diagonals, or 16 units in the last place of the coordinates if larger (lines
+    // closer than that are not told apart by the input coordinates anyway)
+    double largest = 0;
+    for(const auto& c : input)
+      for(double x : c) largest = std::max(largest, std::abs(x));
+    collinearity = std::max(1e-7 * half_diagonal, 16 * (std::nextafter(largest, HUGE_VAL) - largest));
+  }
   // every segment is on the line of its group's reference segment, given by its two double
   // endpoints (which spares the exact evaluation of the extents' ends to identify lines)
   const std::vector<std::size_t> reference = PPS::internal::collinear_groups(input, collinearity);
   const std::vector<typename EK::Segment_2> exact_segments = PPS::internal::snap_collinear_segments<EK>(input, reference);
   std::vector<PPS::internal::Exact_piece<EK>> metric_segments;
   for(std::size_t i = 0; i < input.size(); ++i) metric_segments.push_back({exact_segments[i], false, reference[i]});
-  // the propagation needs distinct segments (two moved onto the same line can coincide; the
-  // metric of their line counts both), in an order that does not depend on the input's
-  std::vector<std::pair<typename EK::Segment_2, std::size_t>> distinct; // with the group
-  {
-    auto canonical = [](const typename EK::Segment_2& s) {
-      return CGAL::compare_xy(s.source(), s.target()) == CGAL::LARGER ? s.opposite() : s;
-    };
-    for(std::size_t i = 0; i < input.size(); ++i) distinct.emplace_back(canonical(exact_segments[i]), reference[i]);
-    auto less = [](const auto& a, const auto& b) {
-      const CGAL::Comparison_result c = CGAL::compare_xy(a.first.source(), b.first.source());
-      return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xy(a.first.target(), b.first.target()) == CGAL::SMALLER);
-    };
-    std::sort(distinct.begin(), distinct.end(), less);
-    distinct.erase(std::unique(distinct.begin(), distinct.end(),
-                               [](const auto& a, const auto& b) { return a.first == b.first; }),
-                   distinct.end());
-  }
+  for(std::size_t i = 0; i < input.size(); ++i) report.moved_segments += reference[i] != i ? 1 : 0;
+  // the propagation grows distinct segments, equal and overlapping collinear ones merged (two
+  // moved onto one line can coincide too; the metric of their line counts each), in an order
+  // that does not depend on the input's
+  std::size_t merged = 0;
+  const std::vector<std::pair<typename EK::Segment_2, std::size_t>> distinct = // with the group
+    PPS::internal::merge_overlapping_segments<EK>(exact_segments, reference, merged);
+  report.overlapping_segments = merged > report.equal_segments ? merged - report.equal_segments : 0;
+  report.grown_segments = distinct.size();
   std::vector<typename EK::Segment_2> distinct_segments;
   for(const auto& d : distinct) distinct_segments.push_back(d.first);
 
@@ -273,6 +294,7 @@ kinetic_partition_2(const SegmentRange& segments,
     pieces.reserve(distinct.size() + 4);
     for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false, distinct[i].second});
     for(int k = 0; k < 4; ++k) pieces.push_back({typename EK::Segment_2(box[k], box[(k + 1) % 4]), true});
+    report.events = propagation.statistics().events;
     return PPS::internal::build_line_partition<typename Result::Given>(pieces, metric_segments, frame, gt, input);
   };
   auto make_propagation = [&] {
@@ -280,7 +302,11 @@ kinetic_partition_2(const SegmentRange& segments,
   };
   // again with some corners released while a chain of corners hangs at a point (see
   // release_hanging_corners_2.h)
-  return PPS::internal::propagate_releasing_hanging_corners(make_propagation, partition_of, 1e-9 * frame.scale);
+  Partition result =
+    PPS::internal::propagate_releasing_hanging_corners(make_propagation, partition_of, 1e-9 * frame.scale, report.propagations);
+  if(auto* out = choose_parameter(get_parameter(np, PPS::internal_np::report), static_cast<PPS::Kinetic_partition_report*>(nullptr)))
+    *out = report;
+  return result;
 }
 
 } // namespace CGAL

@@ -21,7 +21,7 @@ enum class Input_error_code
   EMPTY_INPUT,            ///< no segment, no polygon, or an arrangement without edges
   NON_FINITE_COORDINATE,  ///< a coordinate is NaN or infinite, or beyond 1e100 in magnitude
   ZERO_LENGTH_SEGMENT,    ///< a segment whose two endpoints are equal, or too close for double precision
-  DUPLICATED_SEGMENT,     ///< the same segment given twice (in either orientation)
+  DUPLICATED_SEGMENT,     ///< the same segment given twice (in either orientation); `kinetic_partition_2()` merges such segments and does not throw it
   NO_CELL,                ///< the input bounds no cell (all its edges dangle)
   INVALID_PARAMETER,      ///< a parameter is out of its range (negative weight, step ratio not in (0,1), ...)
   UNREADABLE_FILE,        ///< an input file cannot be opened, or is not a regular file

@@ -37,6 +37,7 @@ enum minimum_building_height_t { minimum_building_height };
 enum height_tolerance_t { height_tolerance };
 enum remove_far_points_t { remove_far_points };
 enum walls_at_facades_t { walls_at_facades };
+enum report_t { report };
 enum classification_map_t { classification_map };
 enum ground_classes_t { ground_classes };
 enum building_classes_t { building_classes };
@@ -108,6 +109,8 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(height_tolerance)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(remove_far_points)
 /// the lift puts the walls on the facades whose points were seen (not at the edges of overhanging roofs)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(walls_at_facades)
+/// a pointer to a report that the function fills (`Kinetic_partition_report` for `kinetic_partition_2()`)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(report)
 /// property map from the points to their class (an integer, as the ASPRS classes of LAS files)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(classification_map)
 /// the classes of the ground points (`std::vector<int>`)

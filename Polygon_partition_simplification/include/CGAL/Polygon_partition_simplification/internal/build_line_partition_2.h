@@ -226,6 +226,19 @@ Partition canonical_partition(const typename Partition::Frame& frame, const std:
   return Partition(frame, std::move(kept), std::move(sorted_vertices), std::move(edges), gt);
 }
 
+// The distance (normalized frame) below which two points are merged and a point is put on an
+// edge: 1e-13 half-diagonals (points computed in double from nearly concurrent lines are off by
+// more than that only at angles below 1e-3), or 8 units in the last place of the input
+// coordinates of the frame, if larger (points closer than that in the normalized frame would
+// coincide or swap in input coordinates).
+template <class Frame>
+double merge_tolerance(const Frame& frame)
+{
+  const double largest = std::max(std::abs(frame.center_x), std::abs(frame.center_y)) + 2 * frame.scale;
+  const double ulp = std::nextafter(largest, HUGE_VAL) - largest;
+  return std::max(1e-13, 8 * ulp / frame.scale);
+}
+
 // `metric_segments`: the segments the metrics of the lines are accumulated from (the pieces
 // themselves when empty; the fixed pieces always). `group_lines`: lines given by two points
 // in double precision, on which the pieces and metric segments with a `line_group` lie
@@ -264,8 +277,9 @@ build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
   Piece_graph<EK> graph = piece_graph(arrangement);
   prune_dangling_edges(graph);
   Points_and_edges<Partition> parts = points_and_chained_edges<Partition>(graph);
-  // 5. Points whose double coordinates coincide, merged (see merge_rounded_points_2.h).
-  merge_points_that_round_together(lines.lines, parts.vertices, parts.edges);
+  // 5. Points whose double coordinates come too close to another point or to an edge, merged
+  //    with it or put on it (see merge_rounded_points_2.h).
+  round_points_apart(lines.lines, parts.vertices, parts.edges, merge_tolerance(frame));
   // 6. Numbering independent of the input order and position.
   return canonical_partition<Partition>(frame, lines.lines, std::move(parts.vertices), std::move(parts.edges), gt);
 }

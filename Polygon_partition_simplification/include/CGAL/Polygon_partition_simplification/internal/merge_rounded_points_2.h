@@ -5,18 +5,23 @@
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_INTERNAL_MERGE_ROUNDED_POINTS_2_H
 
 // The points of a partition are computed in double from their lines, and two of them must
-// not coincide. Distinct exact points can round to the same coordinates: the end of a segment
-// whose line passes within a rounding error of a corner of the bounding box (whose corners
-// are rounded), next to that corner; or two intersections of nearly identical lines. Points
-// that coincide so and are joined by an edge are merged, as the collapse of that edge: the
-// merged point is on all their lines (on two sides of the box, it is the corner).
+// not coincide. Distinct exact points can round to the same coordinates, or to coordinates in
+// the wrong order: the end of a segment whose line passes within a rounding error of a corner
+// of the bounding box (whose corners are rounded), next to that corner; two intersections of
+// nearly identical lines; the three intersections of three nearly concurrent lines (a triangle
+// far smaller than the rounding errors of the points computed from the lines). Points that come
+// so close and are joined by an edge are merged, as the collapse of that edge: the merged point
+// is on all their lines (on two sides of the box, it is the corner).
 
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -25,29 +30,25 @@ namespace CGAL {
 namespace Polygon_partition_simplification {
 namespace internal {
 
-// `lines`, `vertices` and `edges`: those of a `Line_partition_2` (edges with source < target,
-// sorted by (line, source, target)); the points merged, the collapsed edges removed, and the
-// edges sorted again and made distinct.
-template <class Line, class Vertex, class Edge>
-void merge_points_that_round_together(const std::vector<Line>& lines, std::vector<Vertex>& vertices,
-                                      std::vector<Edge>& edges)
+// The positions of the points (normalized frame), computed from their lines.
+template <class Line, class Vertex>
+std::vector<std::array<double, 2>> point_positions(const std::vector<Line>& lines, const std::vector<Vertex>& vertices)
 {
-  const std::size_t n = vertices.size();
-  std::vector<std::array<double, 2>> position(n);
-  for(std::size_t v = 0; v < n; ++v)
+  std::vector<std::array<double, 2>> position(vertices.size());
+  for(std::size_t v = 0; v < vertices.size(); ++v)
     position[v] = point_of_lines(
       vertices[v].lines, [&](std::size_t l) -> const Vector_3d& { return lines[l].coefficients; },
       [&](std::size_t l) { return lines[l].is_fixed; });
-  // The merged points are numbered as their smallest member, in the order of the points: the
-  // sets keep their smallest member as representative.
-  Union_find<std::size_t> sets(n);
-  bool merged = false;
-  for(const Edge& e : edges)
-    if(position[e.source] == position[e.target]) {
-      sets.unite_at_smallest(e.source, e.target);
-      merged = true;
-    }
-  if(!merged) return;
+  return position;
+}
+
+// Merges the sets of `sets` (points of `vertices`, each the union of the lines of its
+// members), removes the edges that collapse and the edges that repeat (same line, same points),
+// and sorts the edges again by (line, source, target).
+template <class Vertex, class Edge>
+void apply_point_merges(Union_find<std::size_t>& sets, std::vector<Vertex>& vertices, std::vector<Edge>& edges)
+{
+  const std::size_t n = vertices.size();
   std::vector<std::size_t> new_index(n, std::size_t(-1));
   std::vector<Vertex> kept;
   for(std::size_t v = 0; v < n; ++v)
@@ -80,6 +81,150 @@ void merge_points_that_round_together(const std::vector<Line>& lines, std::vecto
                   }), remaining.end());
   vertices.swap(kept);
   edges.swap(remaining);
+}
+
+// `lines`, `vertices` and `edges`: those of a `Line_partition_2` (edges with source < target,
+// sorted by (line, source, target)). The points whose double coordinates differ by at most
+// `tolerance` (in each coordinate, normalized frame) are merged (as the collapse of the edge
+// that joins them, if one does), and so are two points joined by two edges on different lines
+// (what is left of a triangle of three nearly concurrent lines when one of its edges
+// collapses), if they are within 10^4 `tolerance`; the
+// merged point is on the lines of its members and is computed from them, so merging is repeated
+// (at most 8 times) until no edge is that short. The edges that collapse are removed, the others
+// sorted again and made distinct.
+template <class Line, class Vertex, class Edge>
+void merge_points_that_round_together(const std::vector<Line>& lines, std::vector<Vertex>& vertices,
+                                      std::vector<Edge>& edges, double tolerance = 0)
+{
+  auto close = [](const std::array<double, 2>& p, const std::array<double, 2>& q, double d) {
+    return std::abs(p[0] - q[0]) <= d && std::abs(p[1] - q[1]) <= d;
+  };
+  const double two_gon_tolerance = 1e4 * tolerance;
+  for(int round = 0; round < 8; ++round) {
+    const std::size_t n = vertices.size();
+    const std::vector<std::array<double, 2>> position = point_positions(lines, vertices);
+    // The merged points are numbered as their smallest member, in the order of the points: the
+    // sets keep their smallest member as representative.
+    Union_find<std::size_t> sets(n);
+    bool merged = false;
+    for(const Edge& e : edges) {
+      const auto& p = position[e.source];
+      const auto& q = position[e.target];
+      if(p == q || close(p, q, tolerance)) {
+        sets.unite_at_smallest(e.source, e.target);
+        merged = true;
+      }
+    }
+    { // points closer than the tolerance that no edge joins: one hot pixel, as in snap rounding
+      std::vector<std::size_t> by_x(n);
+      for(std::size_t v = 0; v < n; ++v) by_x[v] = v;
+      std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return position[a] < position[b]; });
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = i + 1; j < n && position[by_x[j]][0] - position[by_x[i]][0] <= tolerance; ++j)
+          if(close(position[by_x[i]], position[by_x[j]], tolerance)) {
+            sets.unite_at_smallest(by_x[i], by_x[j]);
+            merged = true;
+          }
+    }
+    {
+      std::vector<std::pair<std::size_t, std::size_t>> ends;
+      for(const Edge& e : edges) ends.emplace_back(e.source, e.target);
+      std::sort(ends.begin(), ends.end());
+      for(std::size_t k = 1; k < ends.size(); ++k)
+        if(ends[k] == ends[k - 1] && close(position[ends[k].first], position[ends[k].second], two_gon_tolerance)) {
+          sets.unite_at_smallest(ends[k].first, ends[k].second);
+          merged = true;
+        }
+    }
+    if(!merged) return;
+    apply_point_merges(sets, vertices, edges);
+  }
+}
+
+// Iterated snap rounding routes a segment through every point that comes within a pixel of it;
+// here, a point that comes within `tolerance` of an edge it does not bound (in double, normalized
+// frame, strictly between the ends of the edge) is put on that edge: the edge is split there and
+// the point gets the edge's line (the point is then computed from one more line, that passes
+// within `tolerance` of it). Returns whether an edge was split; the edges are sorted again.
+template <class Line, class Vertex, class Edge>
+bool split_edges_at_close_points(const std::vector<Line>& lines, std::vector<Vertex>& vertices,
+                                 std::vector<Edge>& edges, double tolerance)
+{
+  const std::vector<std::array<double, 2>> position = point_positions(lines, vertices);
+  std::vector<std::array<double, 4>> segments;
+  std::array<double, 2> low{{HUGE_VAL, HUGE_VAL}}, high{{-HUGE_VAL, -HUGE_VAL}};
+  for(const Edge& e : edges) {
+    const auto& a = position[e.source];
+    const auto& b = position[e.target];
+    segments.push_back({{a[0], a[1], b[0], b[1]}});
+    for(int c = 0; c < 2; ++c) {
+      low[c] = std::min({low[c], a[c], b[c]});
+      high[c] = std::max({high[c], a[c], b[c]});
+    }
+  }
+  if(!std::isfinite(low[0] + low[1] + high[0] + high[1])) return false; // an invalid partition
+  const Segment_grid_2 grid(segments, low, high);
+  const int rings = 1 + int(std::ceil(tolerance / grid.cell_size()));
+  std::vector<std::vector<std::pair<double, std::size_t>>> splits(edges.size()); // (parameter, point)
+  bool split = false;
+  for(std::size_t v = 0; v < vertices.size(); ++v) {
+    const auto& p = position[v];
+    const int x = grid.column(p[0]), y = grid.row(p[1]);
+    for(int k = 0; k <= rings; ++k)
+      grid.for_each_in_ring(x, y, k, [&](std::uint32_t e) {
+        if(edges[e].source == v || edges[e].target == v) return;
+        const auto& s = segments[e];
+        const double dx = s[2] - s[0], dy = s[3] - s[1], l2 = dx * dx + dy * dy;
+        const double t = ((p[0] - s[0]) * dx + (p[1] - s[1]) * dy) / l2;
+        if(!(t * std::sqrt(l2) > tolerance && (1 - t) * std::sqrt(l2) > tolerance)) return;
+        if(std::abs(dx * (p[1] - s[1]) - dy * (p[0] - s[0])) > tolerance * std::sqrt(l2)) return;
+        if(std::find_if(splits[e].begin(), splits[e].end(), [&](const auto& x) { return x.second == v; }) != splits[e].end())
+          return; // listed in several cells
+        splits[e].push_back({t, v});
+        split = true;
+      });
+  }
+  if(!split) return false;
+  std::vector<Edge> result;
+  for(std::size_t e = 0; e < edges.size(); ++e) {
+    std::sort(splits[e].begin(), splits[e].end());
+    std::size_t from = edges[e].source;
+    for(const auto& [t, v] : splits[e]) {
+      Edge piece = edges[e];
+      piece.source = std::min(from, v);
+      piece.target = std::max(from, v);
+      if(piece.source != piece.target) result.push_back(piece);
+      auto& l = vertices[v].lines;
+      if(!std::binary_search(l.begin(), l.end(), edges[e].line)) l.insert(std::lower_bound(l.begin(), l.end(), edges[e].line), edges[e].line);
+      from = v;
+    }
+    Edge last = edges[e];
+    last.source = std::min(from, edges[e].target);
+    last.target = std::max(from, edges[e].target);
+    if(last.source != last.target) result.push_back(last);
+  }
+  std::sort(result.begin(), result.end(), [](const Edge& x, const Edge& y) {
+    return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
+  });
+  result.erase(std::unique(result.begin(), result.end(), [](const Edge& x, const Edge& y) {
+                 return std::tie(x.line, x.source, x.target) == std::tie(y.line, y.source, y.target);
+               }), result.end());
+  edges.swap(result);
+  return true;
+}
+
+// Points that come closer than `tolerance` (normalized frame, in double) to another point they
+// are joined to, or to an edge they do not bound, are merged with it or put on it, until none
+// does (at most 8 rounds): the rounding of iterated snap rounding, on points computed from lines.
+template <class Line, class Vertex, class Edge>
+void round_points_apart(const std::vector<Line>& lines, std::vector<Vertex>& vertices, std::vector<Edge>& edges,
+                        double tolerance)
+{
+  for(int round = 0; round < 8; ++round) {
+    merge_points_that_round_together(lines, vertices, edges, tolerance);
+    if(!split_edges_at_close_points(lines, vertices, edges, tolerance)) return;
+  }
+  merge_points_that_round_together(lines, vertices, edges, tolerance);
 }
 
 } // namespace internal

@@ -77,10 +77,11 @@ std::vector<std::size_t> hanging_corner_rays(const Partition& p, const std::vect
 
 // The kinetic partition, computed again with rays released while it has hanging corners (see
 // above). `make_propagation()` returns a new `Kinetic_propagation_2<EK>` of the segments;
-// `partition_of(propagation)` builds the partition of a propagation that has run.
+// `partition_of(propagation)` builds the partition of a propagation that has run. `runs` is set
+// to the number of propagations run.
 template <class MakePropagation, class PartitionOf>
 auto propagate_releasing_hanging_corners(const MakePropagation& make_propagation, const PartitionOf& partition_of,
-                                         double tolerance)
+                                         double tolerance, std::size_t& runs)
 {
   auto run = [&](const std::vector<std::size_t>& released, auto& propagation) {
     for(std::size_t r : released) propagation.release(r);
@@ -89,10 +90,10 @@ auto propagate_releasing_hanging_corners(const MakePropagation& make_propagation
   };
   auto propagation = make_propagation();
   auto partition = run({}, propagation); // not const: moved out when returned
+  runs = 1;
   const std::vector<std::size_t> defective = partition.defective_edges();
   if(defective.empty()) return partition;
   constexpr std::size_t maximum_runs = 16, maximum_single_runs = 5;
-  std::size_t runs = 1;
   const std::vector<std::size_t> first_candidates = hanging_corner_rays(partition, defective, propagation, tolerance);
   for(std::size_t r : first_candidates) {
     if(runs == maximum_single_runs) break;

@@ -15,11 +15,15 @@
 // collinear segments do.
 //
 // A segment joins the group of a longer one when both its endpoints are within `distance` of
-// that segment's line. Segments are taken by decreasing length (ties by their sorted
+// that segment's line (a segment shorter than 4 `distance`: within 1e-6 of its own length, so
+// that only nearly identical lines are merged). Segments are taken by decreasing length (ties by their sorted
 // coordinates), so the groups do not depend on the input order. Candidates are found among
 // the longer segments whose direction is close enough (sorted by angle): a segment of length
 // l with both endpoints within d of a line makes an angle of at most asin(2 d / l) with it.
 
+#include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
+
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
 #include <boost/variant/get.hpp>
@@ -30,6 +34,7 @@
 #include <cstddef>
 #include <map>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -83,14 +88,18 @@ inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<do
   std::map<long long, std::multimap<double, std::size_t>> references; // angle bin -> offset -> rank in `order`
   for(std::size_t rank = 0; rank < n; ++rank) {
     const std::size_t s = order[rank];
-    // a segment not much longer than the distance has no meaningful direction: left alone
-    if(!(length[s] > 4 * distance)) continue;
-    const double window = std::asin(std::min(1., 2 * distance / length[s])) + 1e-12;
+    // a segment not much longer than the distance has no meaningful direction at that distance:
+    // it joins a group only when its endpoints are within 1e-6 of its length of the group's line
+    // (nearly the same line: the points computed from two such lines would be ill-conditioned);
+    // the segments are taken by decreasing length, so only shorter ones can join its group
+    const bool is_long = length[s] > 4 * distance;
+    const double reach = is_long ? distance : std::min(distance, 1e-6 * length[s]);
+    const double window = std::asin(std::min(1., 2 * reach / length[s])) + 1e-12;
     const auto& c = input[s];
     const double own_offset = offset(angle[s], c[0], c[1]);
     const double radius = (std::max)(std::hypot(c[0] - center[0], c[1] - center[1]),
                                      std::hypot(c[2] - center[0], c[3] - center[1]));
-    const double slack = (distance + window * radius) * (1 + 1e-9) + 1e-12 * (radius + std::abs(center[0]) + std::abs(center[1]));
+    const double slack = (reach + window * radius) * (1 + 1e-9) + 1e-12 * (radius + std::abs(center[0]) + std::abs(center[1]));
     std::size_t best = n; // the longest matching reference (smallest rank)
     // the references with an angle in [low, high] and an offset within `slack` of `around`
     auto scan = [&](double low, double high, double around) {
@@ -99,15 +108,15 @@ inline std::vector<std::size_t> collinear_groups(const std::vector<std::array<do
           if(it->second >= best) continue;
           const std::size_t r = order[it->second];
           if(angle[r] < low || angle[r] > high) continue;
-          if(off_line(r, c[0], c[1]) <= distance && off_line(r, c[2], c[3]) <= distance) best = it->second;
+          if(off_line(r, c[0], c[1]) <= reach && off_line(r, c[2], c[3]) <= reach) best = it->second;
         }
     };
     scan(angle[s] - window, angle[s] + window, own_offset);
     // across the angle pi, normals are opposite: so are offsets
     if(angle[s] - window < 0) scan(angle[s] - window + pi, pi, -own_offset);
     if(angle[s] + window >= pi) scan(0, angle[s] + window - pi, -own_offset);
-    if(best == n) references[bin_of(angle[s])].emplace(offset(angle[s], c[0], c[1]), rank);
-    else reference[s] = order[best];
+    if(best != n) reference[s] = order[best];
+    else references[bin_of(angle[s])].emplace(offset(angle[s], c[0], c[1]), rank);
   }
   return reference;
 }
@@ -131,6 +140,69 @@ snap_collinear_segments(const std::vector<std::array<double, 4>>& input, const s
     if(line.has_on(p) && line.has_on(q)) continue;
     result[s] = typename EK::Segment_2(line.projection(p), line.projection(q));
   }
+  return result;
+}
+
+// Segments on one line that overlap (share more than a point; equal segments among them) are
+// merged into their union: a segment given twice, or a wall given by two detections that
+// overlap, is one segment of the partition. Overlapping pairs are found among the pairs whose
+// bounding boxes meet (CGAL's box intersection), then decided with exact predicates: both
+// segments on one line (by construction when they are in the same group of
+// collinear_groups(), `group`), and their common part of positive length. Returns the merged
+// segments (the union of each set of overlapping segments, each segment that overlaps none)
+// with the group of their first member, oriented from their smaller endpoint (lexicographic
+// order), sorted by their endpoints, and no two equal: an order that does not depend on the
+// input order. `merged` is set to the number of segments merged into another one.
+template <class EK>
+std::vector<std::pair<typename EK::Segment_2, std::size_t>>
+merge_overlapping_segments(const std::vector<typename EK::Segment_2>& segments, const std::vector<std::size_t>& group,
+                           std::size_t& merged)
+{
+  using Segment = typename EK::Segment_2;
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+  const std::size_t n = segments.size();
+  std::vector<Box> boxes;
+  boxes.reserve(n);
+  for(std::size_t i = 0; i < n; ++i) boxes.emplace_back(segments[i].bbox(), i);
+  // the parameter of p along s, in units of |s|^2
+  auto along = [](const Segment& s, const typename EK::Point_2& p) { return (p - s.source()) * (s.target() - s.source()); };
+  Union_find<std::size_t> sets(n);
+  auto overlap = [&](const Box& a, const Box& b) {
+    const std::size_t i = a.info(), j = b.info();
+    const Segment& s = segments[i];
+    const Segment& t = segments[j];
+    if(group[i] != group[j] && !(CGAL::collinear(s.source(), s.target(), t.source()) &&
+                                 CGAL::collinear(s.source(), s.target(), t.target())))
+      return;
+    // [t0, t1] and [0, |s|^2] share more than a point
+    const auto t0 = along(s, t.source()), t1 = along(s, t.target());
+    const bool increasing = CGAL::compare(t0, t1) == CGAL::SMALLER;
+    const auto& low = increasing ? t0 : t1;
+    const auto& high = increasing ? t1 : t0;
+    if(CGAL::sign(high) == CGAL::POSITIVE && CGAL::compare(low, s.squared_length()) == CGAL::SMALLER)
+      sets.unite_at_smallest(i, j);
+  };
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), overlap);
+  // the union of each set: its smallest and largest endpoints (lexicographic order; they are
+  // on one line)
+  std::vector<std::pair<Segment, std::size_t>> result;
+  std::vector<std::size_t> slot(n, n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const typename EK::Point_2 &p = segments[i].source(), &q = segments[i].target();
+    const bool reversed = CGAL::compare_xy(p, q) == CGAL::LARGER;
+    const Segment s = reversed ? Segment(q, p) : segments[i];
+    const std::size_t r = sets.find(i);
+    if(slot[r] == n) { slot[r] = result.size(); result.emplace_back(s, group[i]); continue; }
+    Segment& u = result[slot[r]].first;
+    const bool lower = CGAL::compare_xy(s.source(), u.source()) == CGAL::SMALLER;
+    const bool higher = CGAL::compare_xy(s.target(), u.target()) == CGAL::LARGER;
+    if(lower || higher) u = Segment(lower ? s.source() : u.source(), higher ? s.target() : u.target());
+  }
+  merged = n - result.size();
+  std::sort(result.begin(), result.end(), [](const auto& a, const auto& b) {
+    const CGAL::Comparison_result c = CGAL::compare_xy(a.first.source(), b.first.source());
+    return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xy(a.first.target(), b.first.target()) == CGAL::SMALLER);
+  });
   return result;
 }
 
