@@ -26,6 +26,7 @@
 #include "synthetic_buildings.h"
 
 #include <CGAL/Iso_rectangle_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
 
 #include <algorithm>
 #include <array>
@@ -400,6 +401,20 @@ inline std::vector<Lot_kind> lot_kinds(std::size_t buildings)
 
 } // namespace internal
 
+/// Readable property maps of the position and the class of a `City_sample`.
+struct City_point_map
+{
+  using key_type = City_sample; using value_type = Point_3; using reference = const Point_3&;
+  using category = boost::readable_property_map_tag;
+  friend reference get(City_point_map, const City_sample& s) { return s.point; }
+};
+struct City_class_map
+{
+  using key_type = City_sample; using value_type = int; using reference = int;
+  using category = boost::readable_property_map_tag;
+  friend int get(City_class_map, const City_sample& s) { return s.classification; }
+};
+
 /// A city of `options.buildings` truth buildings on a grid of square lots `options.spacing` wide
 /// (as many columns as rows, or one fewer row; the last lots of the last row hold ground and
 /// trees only), the first lot at the origin; each building (or pair) within spacing / 2 - 2.2 m
@@ -440,6 +455,18 @@ inline City make_city(const City_options& options = {})
   }
   return city;
 }
+
+/// The true footprints of a city as polygons with holes, in the order of its buildings.
+inline std::vector<Polygon_with_holes_2<Kernel>> footprint_polygons(const City& city)
+{
+  std::vector<Polygon_with_holes_2<Kernel>> footprints;
+  for(std::size_t b = 0; b < city.footprints.size(); ++b) {
+    footprints.emplace_back(Polygon_2<Kernel>(city.footprints[b].begin(), city.footprints[b].end()));
+    for(const auto& hole : city.footprint_holes[b]) footprints.back().add_hole(Polygon_2<Kernel>(hole.begin(), hole.end()));
+  }
+  return footprints;
+}
+
 
 namespace internal {
 

@@ -27,26 +27,13 @@ using T::Mesh;
 using T::Point_3;
 using Building = PPS::City_building<Point_3>;
 
-struct City_point_map
-{
-  using key_type = T::City_sample; using value_type = Point_3; using reference = const Point_3&;
-  using category = boost::readable_property_map_tag;
-  friend reference get(City_point_map, const T::City_sample& s) { return s.point; }
-};
-struct City_class_map
-{
-  using key_type = T::City_sample; using value_type = int; using reference = int;
-  using category = boost::readable_property_map_tag;
-  friend int get(City_class_map, const T::City_sample& s) { return s.classification; }
-};
-
 template <class NamedParameters>
 PPS::LOD2_city_report reconstruct(const std::vector<T::City_sample>& samples, std::vector<Building>& buildings,
                                   int threads, const NamedParameters& np)
 {
   return CGAL::lod2_city_reconstruction(
     samples, buildings,
-    PPS::parameters::classification_map(City_class_map(), PPS::parameters::number_of_threads(threads, np)).point_map(City_point_map()));
+    PPS::parameters::classification_map(T::City_class_map(), PPS::parameters::number_of_threads(threads, np)).point_map(T::City_point_map()));
 }
 
 std::string city_json(const std::vector<Building>& buildings)
@@ -126,24 +113,13 @@ void test_city_without_footprints()
   assert(text == city_json(shuffled));
 }
 
-std::vector<CGAL::Polygon_with_holes_2<T::Kernel>> footprints_of(const T::City& city)
-{
-  std::vector<CGAL::Polygon_with_holes_2<T::Kernel>> footprints;
-  for(std::size_t b = 0; b < city.footprints.size(); ++b) {
-    CGAL::Polygon_with_holes_2<T::Kernel> polygon(CGAL::Polygon_2<T::Kernel>(city.footprints[b].begin(), city.footprints[b].end()));
-    for(const auto& hole : city.footprint_holes[b]) polygon.add_hole(CGAL::Polygon_2<T::Kernel>(hole.begin(), hole.end()));
-    footprints.push_back(polygon);
-  }
-  return footprints;
-}
-
 void test_city_with_footprints()
 {
   T::City_options options;
   options.buildings = 12;
   options.seed = 3;
   const T::City city = T::make_city(options);
-  auto footprints = footprints_of(city);
+  auto footprints = T::footprint_polygons(city);
   // a footprint far from every point gives no building, with a count in the report
   const double far = city.extent.xmax() + 1000;
   const std::vector<T::Point_2> empty_lot{{far, 0}, {far + 10, 0}, {far + 10, 10}, {far, 10}};

@@ -24,39 +24,22 @@ namespace PPS = CGAL::Polygon_partition_simplification;
 namespace T = PPS::test;
 using Building = PPS::City_building<T::Point_3>;
 
-struct City_point_map
-{
-  using key_type = T::City_sample; using value_type = T::Point_3; using reference = const T::Point_3&;
-  using category = boost::readable_property_map_tag;
-  friend reference get(City_point_map, const T::City_sample& s) { return s.point; }
-};
-struct City_class_map
-{
-  using key_type = T::City_sample; using value_type = int; using reference = int;
-  using category = boost::readable_property_map_tag;
-  friend int get(City_class_map, const T::City_sample& s) { return s.classification; }
-};
-
 static PPS::LOD2_city_report run(const T::City& city, int threads, std::vector<Building>& buildings)
 {
   return CGAL::lod2_city_reconstruction(
     city.samples, buildings,
-    PPS::parameters::classification_map(City_class_map(), PPS::parameters::number_of_threads(threads))
-      .point_map(City_point_map()));
+    PPS::parameters::classification_map(T::City_class_map(), PPS::parameters::number_of_threads(threads))
+      .point_map(T::City_point_map()));
 }
 
 // the same with the true footprints given
 static PPS::LOD2_city_report run_with_footprints(const T::City& city, std::vector<Building>& buildings)
 {
-  std::vector<CGAL::Polygon_with_holes_2<T::Kernel>> footprints;
-  for(std::size_t b = 0; b < city.footprints.size(); ++b) {
-    footprints.emplace_back(CGAL::Polygon_2<T::Kernel>(city.footprints[b].begin(), city.footprints[b].end()));
-    for(const auto& hole : city.footprint_holes[b]) footprints.back().add_hole(CGAL::Polygon_2<T::Kernel>(hole.begin(), hole.end()));
-  }
+  const auto footprints = T::footprint_polygons(city);
   return CGAL::lod2_city_reconstruction(
     city.samples, buildings,
-    PPS::parameters::footprints(footprints, PPS::parameters::classification_map(City_class_map(), PPS::parameters::number_of_threads(1)))
-      .point_map(City_point_map()));
+    PPS::parameters::footprints(footprints, PPS::parameters::classification_map(T::City_class_map(), PPS::parameters::number_of_threads(1)))
+      .point_map(T::City_point_map()));
 }
 
 static std::string city_json(const std::vector<Building>& buildings)
