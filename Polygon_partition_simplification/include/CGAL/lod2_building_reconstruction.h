@@ -54,7 +54,9 @@ the 2D segments of a building scene (section 3.2.1): for every two adjacent plan
 are nearest neighbours), the segment of their intersection line spanned by their points near
 it, projected to the ground plane and marked as a facade when one plane is vertical and the other
 is not; and, since aerial scans see few walls, the outline of each roof plane's points (a
-regularized alpha shape, simplified by Douglas-Peucker), marked as facades.
+regularized alpha shape, simplified by Douglas-Peucker), marked as facades. The outline pieces
+within 5 degrees of the direction of a facade plane (or of its normal) take that direction, and
+those then within twice the spacing of one line (a facade's, or each other's) are put on it.
 
 \param points the points given to `detect_building_planes_3()`
 \param planes its result

@@ -63,6 +63,8 @@ struct LOD2_settings
     s.minimum_length = 4 * spacing;
     s.outline_alpha = 2.5 * spacing;
     s.outline_tolerance = 2 * spacing;
+    s.alignment_angle = planes.regularization_angle;
+    s.alignment_distance = 2 * spacing;
     return s;
   }
 

@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_partition_simplification/Building_planes_3.h>
 #include <CGAL/Polygon_partition_simplification/Building_segment_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/align_outlines_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/roof_outlines_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/runs_along_2.h>
 
@@ -34,6 +35,8 @@ struct Segment_extraction_settings
   double outline_tolerance = 0;    ///< Douglas-Peucker tolerance of the roofs' outlines
   std::size_t minimum_contacts = 5; ///< adjacent planes share at least this many nearest-neighbour pairs
   std::size_t neighbors = 12;      ///< k of the k-nearest-neighbour graph
+  double alignment_angle = 5;      ///< outlines this close to a facade's direction take it (degrees)
+  double alignment_distance = 0;   ///< outlines and facades this close to one line are put on it
 };
 
 /// the points of two planes that are nearest neighbours of a point of the other, for every
@@ -110,7 +113,8 @@ bool intersection_segment(const std::vector<typename Kernel::Point_3>& points, c
 /// which give the walls that aerial scans hardly see; intersections of the ground with a
 /// non-vertical plane are left out (their contacts are noise), and so are the pieces of an
 /// outline along an intersection of its plane (the intersection is where the two planes meet;
-/// the outlines of both stop short of it, and would leave a strip between them)
+/// the outlines of both stop short of it, and would leave a strip between them); the outlines
+/// then follow the facades (`align_outlines_with_facades()`)
 template <class Kernel>
 std::vector<Building_segment_2<Kernel>> building_segments(const std::vector<typename Kernel::Point_3>& points,
                                                           const Building_planes_3<Kernel>& planes,
@@ -147,6 +151,7 @@ std::vector<Building_segment_2<Kernel>> building_segments(const std::vector<type
       segments.push_back(segment);
     }
   }
+  align_outlines_with_facades<Kernel>(points, planes, segments, settings.alignment_angle, settings.alignment_distance);
   return segments;
 }
 
