@@ -189,6 +189,8 @@ in the planes of `detect_building_planes_3()`, `std::size_t(-1)` for walls and f
 \throws Polygon_partition_simplification::Input_error when the input is empty, has a non-finite
 coordinate, has no horizontal extent, gives no roof plane or no segment, or a parameter is out
 of range; `mesh` is then unchanged
+\throws std::logic_error, with `mesh` unchanged, when the kinetic partition comes out invalid
+(a defect of this package, found on no test input; see the manual's limitations)
 */
 template <class PointRange, class Point, class NamedParameters = parameters::Default_named_parameters>
 Polygon_partition_simplification::LOD2_report

@@ -23,7 +23,6 @@ struct LOD2_report
   std::size_t roof_planes = 0;     ///< planes that can carry a roof (neither vertical nor the ground)
   std::size_t segments = 0;        ///< 2D segments given to the kinetic partition
   std::size_t facade_segments = 0; ///< of which along a facade
-  std::size_t partition_attempts = 0; ///< kinetic partitions computed: more than one when one came out invalid and was made again with a smaller snapping distance
   std::size_t cells_before = 0;    ///< cells of the kinetic partition
   std::size_t cells_after = 0;     ///< cells after the simplification
   std::size_t buildings = 0;       ///< closed meshes in the model (one per building)

@@ -38,6 +38,7 @@
 #include <iterator>
 #include <limits>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -362,30 +363,26 @@ std::vector<typename Kernel::Segment_2> distinct_segments(const std::vector<Buil
   return result;
 }
 
-/// the kinetic partition of the segments; unless the user sets `collinearity_distance`, the
-/// segments within twice the spacing of the line of a longer one are moved onto it, so that the
-/// outlines of two roofs that meet at a step (without an intersection line between them) share
-/// their edge instead of leaving a strip of ground between them. The kinetic partition can come
-/// out invalid on some inputs (see the manual's limitations); the snapping distance is then
-/// halved, up to three times (`report.partition_attempts`).
+/// the kinetic partition of the segments, computed once; unless the user sets
+/// `collinearity_distance`, the segments within twice the spacing of the line of a longer one
+/// are moved onto it, so that the outlines of two roofs that meet at a step (without an
+/// intersection line between them) share their edge instead of leaving a strip of ground between
+/// them. A partition that `defect()` refuses (none over the stress scenes of the manual) is a
+/// defect of the package: it throws `std::logic_error` rather than model on it.
 template <class Segment_2, class NamedParameters>
-auto kinetic_partition_of_segments(const std::vector<Segment_2>& segments, double spacing, const NamedParameters& np,
-                                   LOD2_report& report)
+auto kinetic_partition_of_segments(const std::vector<Segment_2>& segments, double spacing, const NamedParameters& np)
 {
-  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::collinearity_distance_t>::value) {
-    double distance = 2 * spacing;
-    for(report.partition_attempts = 1;; ++report.partition_attempts, distance /= 2) {
-      auto partition = CGAL::kinetic_partition_2(segments, parameters::collinearity_distance(distance, np));
-      const std::string defect = partition.defect();
-      if(defect.empty()) return partition;
-      if(report.partition_attempts == 4)
-        throw_input_error(Input_error_code::NO_CELL, "the kinetic partition of the " + std::to_string(segments.size()) +
-                                                       " segments is not valid: " + defect);
-    }
-  } else {
-    report.partition_attempts = 1;
-    return CGAL::kinetic_partition_2(segments, np);
-  }
+  auto partition = [&] {
+    if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::collinearity_distance_t>::value)
+      return CGAL::kinetic_partition_2(segments, parameters::collinearity_distance(2 * spacing, np));
+    else
+      return CGAL::kinetic_partition_2(segments, np);
+  }();
+  const std::string defect = partition.defect();
+  if(!defect.empty())
+    throw std::logic_error("the kinetic partition of the " + std::to_string(segments.size()) +
+                           " segments is not valid (" + defect + "): please report it with the input");
+  return partition;
 }
 
 /// the LOD2 model of the points of `input` (sorted, settings read), whose time starts at `total`;
@@ -421,7 +418,7 @@ LOD2_report reconstruct_lod2_from_input(Input& input, CGAL::Surface_mesh<Point>&
   if(segments_2.empty()) throw_input_error(Input_error_code::NO_PLANE, "no segment found between or around the planes");
   report.segments_seconds = timer.time();
   timer.reset();
-  auto partition = kinetic_partition_of_segments(segments_2, planes.spacing, np, report);
+  auto partition = kinetic_partition_of_segments(segments_2, planes.spacing, np);
   report.cells_before = partition.number_of_cells();
   report.partition_seconds = timer.time();
   timer.reset();
