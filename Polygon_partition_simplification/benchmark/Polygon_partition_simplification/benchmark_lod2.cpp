@@ -49,17 +49,13 @@
 #include <CGAL/Polygonal_surface_reconstruction.h>
 #endif
 
+#include "benchmark_child_process.h"
 #include "synthetic_buildings.h"
 
-#include <poll.h>
-#include <signal.h>
 #include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -83,6 +79,8 @@ using Test::Mesh;
 using Test::Point_3;
 using Test::Sample;
 using Clock = std::chrono::steady_clock;
+using CGAL::Polygon_partition_simplification::benchmark::compute_in_child;
+using CGAL::Polygon_partition_simplification::benchmark::Time_limit_reached;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -220,80 +218,6 @@ Result run_ours(const Input& input, double lambda1)
                 std::to_string(report.cells_before) + "->" + std::to_string(report.cells_after) + ", buildings " +
                 std::to_string(report.buildings);
   return measure(model, input, result, seconds);
-}
-
-// Sends all of `text` to a file descriptor.
-void write_all(int descriptor, const std::string& text)
-{
-  for(std::size_t written = 0; written < text.size();) {
-    const ssize_t count = write(descriptor, text.data() + written, text.size() - written);
-    if(count <= 0) return;
-    written += std::size_t(count);
-  }
-}
-
-// Reads a file descriptor until its end or the deadline; false at the deadline.
-bool read_all(int descriptor, Clock::time_point deadline, std::string& text)
-{
-  char buffer[1 << 16];
-  for(;;) {
-    const double remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
-    pollfd ready{descriptor, POLLIN, 0};
-    const int polled = remaining > 0 ? poll(&ready, 1, int(1000 * remaining) + 1) : 0;
-    if(polled < 0 && errno == EINTR) continue;
-    if(polled == 0) return false;
-    const ssize_t count = read(descriptor, buffer, sizeof buffer);
-    if(count <= 0) return true;
-    text.append(buffer, std::size_t(count));
-  }
-}
-
-struct Time_limit_reached : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
-
-// Computes a model in a child process that is killed after `time_limit` seconds: PolyFit's
-// solver, GLPK as CGAL calls it, has no time limit of its own (and a crash of the child does not
-// end the benchmark). The child sends "ok" and the model as OFF text, or the message of its
-// exception, through a pipe.
-template <class Compute>
-Mesh compute_in_child(Compute compute, double time_limit)
-{
-  int channel[2];
-  if(pipe(channel) != 0) throw std::runtime_error("no pipe to a child process");
-  const pid_t child = fork();
-  if(child < 0) throw std::runtime_error("no child process (fork failed)");
-  if(child == 0) {
-    close(channel[0]);
-    std::ostringstream out;
-    try {
-      const Mesh model = compute();
-      out << "ok\n";
-      CGAL::IO::write_OFF(out, model, CGAL::parameters::stream_precision(17));
-    } catch(const std::exception& error) {
-      out << error.what() << "\n";
-    }
-    write_all(channel[1], out.str());
-    _exit(0); // no destructors, no flush of the parent's buffered output
-  }
-  close(channel[1]);
-  std::string text;
-  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit));
-  const bool finished = read_all(channel[0], deadline, text);
-  close(channel[0]);
-  if(!finished) kill(child, SIGKILL);
-  int status = 0;
-  waitpid(child, &status, 0);
-  if(!finished) throw Time_limit_reached("stopped at the time limit of " + to_text(time_limit) + " s");
-  std::istringstream in(text);
-  std::string first_line;
-  std::getline(in, first_line);
-  if(WIFSIGNALED(status)) throw std::runtime_error("the child process died of signal " + std::to_string(WTERMSIG(status)));
-  if(first_line != "ok") throw std::runtime_error(first_line.empty() ? "the child process sent no model" : first_line);
-  Mesh model;
-  if(!CGAL::IO::read_OFF(in, model)) throw std::runtime_error("the child's model is unreadable");
-  return model;
 }
 
 #ifdef CGAL_USE_GLPK
