@@ -33,7 +33,13 @@ if(NOT URBAN_TOP_LEVEL)
   enable_testing()
 endif()
 
+# CGAL 5.5 or 6. CGAL 6 names its tests "compilation of  <target>" (with spaces), which needs
+# CMake's policy CMP0110 (3.19) in the folders that add tests: the folders below the top level
+# take it from this default; a test folder configured on its own sets it itself.
+set(CMAKE_POLICY_DEFAULT_CMP0110 NEW)
 find_package(CGAL 5.5 REQUIRED)
+message(STATUS "CGAL ${CGAL_VERSION}: ${CGAL_INCLUDE_DIRS}")
+include(${CMAKE_CURRENT_LIST_DIR}/Urban_system_CGAL_stubs.cmake)
 find_package(Eigen3 3.3 QUIET)
 if(EIGEN3_FOUND OR TARGET Eigen3::Eigen)
   include(CGAL_Eigen3_support)
@@ -47,6 +53,9 @@ if(NOT TARGET Lex_optimal_chains)
   add_library(Lex_optimal_chains INTERFACE)
   target_include_directories(Lex_optimal_chains INTERFACE "${URBAN_PACKAGES_ROOT}/Lex_optimal_chains/include")
   target_link_libraries(Lex_optimal_chains INTERFACE CGAL::CGAL)
+  if(URBAN_SYSTEM_CGAL_STUBS)
+    target_include_directories(Lex_optimal_chains INTERFACE "${URBAN_SYSTEM_CGAL_STUBS}")
+  endif()
   if(TARGET CGAL::TBB_support)
     target_link_libraries(Lex_optimal_chains INTERFACE CGAL::TBB_support)
   endif()
@@ -60,6 +69,9 @@ if(NOT TARGET Polygon_partition_simplification)
   target_include_directories(Polygon_partition_simplification INTERFACE
     "${URBAN_PACKAGES_ROOT}/Polygon_partition_simplification/include")
   target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::CGAL)
+  if(URBAN_SYSTEM_CGAL_STUBS)
+    target_include_directories(Polygon_partition_simplification INTERFACE "${URBAN_SYSTEM_CGAL_STUBS}")
+  endif()
   # the LOD2 pipeline: normals (jet fitting) and plane fitting need Eigen
   if(TARGET CGAL::Eigen3_support)
     target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::Eigen3_support)

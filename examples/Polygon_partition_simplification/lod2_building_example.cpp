@@ -24,9 +24,10 @@ int main(int argc, char** argv)
   }
   CGAL::Surface_mesh<K::Point_3> model;
   auto np = CGAL::parameters::point_map(points.point_map()).normal_map(points.normal_map());
-  const auto plane_index = points.property_map<int>("segment_index");
-  const PPS::LOD2_report report = plane_index.second
-    ? CGAL::lod2_building_reconstruction(points, model, np.plane_index_map(plane_index.first))
+  // the planes of the points, if the file gives them (add_property_map() returns the existing map)
+  const PPS::LOD2_report report = points.has_property_map<int>("segment_index")
+    ? CGAL::lod2_building_reconstruction(
+        points, model, np.plane_index_map(points.add_property_map<int>("segment_index").first))
     : CGAL::lod2_building_reconstruction(points, model, np);
 
   std::cout << report.planes << " planes, " << report.segments << " segments, cells "

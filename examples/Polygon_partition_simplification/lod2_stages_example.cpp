@@ -42,12 +42,13 @@ int main(int argc, char** argv)
     std::cerr << "cannot read " << input << std::endl;
     return 1;
   }
-  const auto plane_index = points.property_map<int>("segment_index");
-  if(!plane_index.second) {
+  if(!points.has_property_map<int>("segment_index")) {
     std::cerr << input << " has no segment_index property" << std::endl;
     return 1;
   }
-  const auto np = CGAL::parameters::point_map(points.point_map()).plane_index_map(plane_index.first);
+  // add_property_map() returns the existing map
+  const auto plane_index = points.add_property_map<int>("segment_index").first;
+  const auto np = CGAL::parameters::point_map(points.point_map()).plane_index_map(plane_index);
 
   // 1. planes, regularized (the same named parameters for every stage)
   const PPS::Building_planes_3<K> planes = CGAL::detect_building_planes_3(points, np);
@@ -86,8 +87,10 @@ int main(int argc, char** argv)
   for(const auto& s : segments) out_segments << s.segment.source() << " " << s.segment.target() << " " << s.is_facade << "\n";
   write_edges(kinetic, directory + "/partition.txt");
   write_edges(simplified, directory + "/simplified.txt");
-  const auto type = model.property_map<CGAL::Surface_mesh<K::Point_3>::Face_index, PPS::Building_surface_type>("f:surface_type").first;
-  const auto plane = model.property_map<CGAL::Surface_mesh<K::Point_3>::Face_index, std::size_t>("f:plane").first;
+  // the face properties of the model (add_property_map() returns the existing maps)
+  using Face_index = CGAL::Surface_mesh<K::Point_3>::Face_index;
+  const auto type = model.add_property_map<Face_index, PPS::Building_surface_type>("f:surface_type").first;
+  const auto plane = model.add_property_map<Face_index, std::size_t>("f:plane").first;
   std::ofstream out_model(directory + "/model.txt");
   out_model.precision(17);
   for(auto f : model.faces()) {

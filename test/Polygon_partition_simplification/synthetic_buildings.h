@@ -19,9 +19,9 @@
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_TEST_SYNTHETIC_BUILDINGS_H
 #define CGAL_POLYGON_PARTITION_SIMPLIFICATION_TEST_SYNTHETIC_BUILDINGS_H
 
-#include <CGAL/AABB_traits.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
+
 #include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -491,9 +491,10 @@ public:
   const std::vector<Triangle_3>& triangles() const { return triangles_; }
 
 private:
-  using Primitive = AABB_triangle_primitive<Kernel, std::vector<Triangle_3>::const_iterator>;
+  using Primitive =
+    Polygon_partition_simplification::internal::AABB_triangle_primitive_3<Kernel, std::vector<Triangle_3>::const_iterator>;
   std::vector<Triangle_3> triangles_;
-  AABB_tree<AABB_traits<Kernel, Primitive>> tree_;
+  AABB_tree<Polygon_partition_simplification::internal::AABB_traits_3<Kernel, Primitive>> tree_;
 };
 
 struct Distance_statistics

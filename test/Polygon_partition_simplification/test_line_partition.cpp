@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_partition_simplification/line_partition_from_geometry_2.h>
 #include <CGAL/kinetic_partition_2.h>
 #include <CGAL/simplify_polygon_partition_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/Crossing_free_edges_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 
@@ -176,8 +177,7 @@ void test_kinetic_rules(const std::vector<K::Segment_2>& input)
     }
     for(std::size_t j = i + 1; j < segments.size(); ++j) {
       const auto x = CGAL::intersection(extents[i], extents[j]);
-      if(!x) continue;
-      const EK::Point_2* p = boost::get<EK::Point_2>(&*x);
+      const EK::Point_2* p = PPS::internal::get_if<EK::Point_2>(x);
       if(!p) continue;
       const bool end_of_one = *p == extents[i].source() || *p == extents[i].target() ||
                               *p == extents[j].source() || *p == extents[j].target();
@@ -318,9 +318,10 @@ void test_against_line_arrangement()
   for(const auto& seg : s) {
     const EK::Line_2 line(EK::Point_2(seg.source().x(), seg.source().y()), EK::Point_2(seg.target().x(), seg.target().y()));
     std::vector<EK::Point_2> hits;
-    for(const auto& c : curves)
-      if(auto x = CGAL::intersection(line, c))
-        if(const EK::Point_2* q = boost::get<EK::Point_2>(&*x)) hits.push_back(*q);
+    for(const auto& c : curves) {
+      const auto x = CGAL::intersection(line, c);
+      if(const EK::Point_2* q = PPS::internal::get_if<EK::Point_2>(x)) hits.push_back(*q);
+    }
     std::sort(hits.begin(), hits.end());
     all.emplace_back(hits.front(), hits.back());
   }

@@ -20,16 +20,19 @@
 //   multiples of the step outwards and inwards, at the point's height; a wall that carries no
 //   roof gives none; across a courtyard narrower than the walls are high, the outside of each
 //   wing's facade is the courtyard although the other wing's roof is within reach.
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+// the package's headers first: they read Boost's graph headers with g++'s false positives
+// silenced (internal/CGAL_compatibility.h), before CGAL 6's triangulate_faces.h reads them
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/alpha_expansion_graphcut.h>
 

@@ -41,15 +41,16 @@ static auto sample_maps()
 // roofs face up, walls are vertical, floors face down at the ground height (z = 0 in the scenes)
 static void check_faces(const Mesh& model, double ground, const std::string& name)
 {
-  const auto type = model.property_map<Mesh::Face_index, PPS::Building_surface_type>("f:surface_type");
-  const auto plane = model.property_map<Mesh::Face_index, std::size_t>("f:plane");
-  CHECK(type.second && plane.second, name << ": the face properties exist");
-  if(!type.second || !plane.second) return;
+  const auto type =
+    PPS::internal::optional_property_map(model.property_map<Mesh::Face_index, PPS::Building_surface_type>("f:surface_type"));
+  const auto plane = PPS::internal::optional_property_map(model.property_map<Mesh::Face_index, std::size_t>("f:plane"));
+  CHECK(type && plane, name << ": the face properties exist");
+  if(!type || !plane) return;
   std::size_t wrong = 0;
   for(auto f : model.faces()) {
     const auto n = CGAL::Polygon_mesh_processing::compute_face_normal(f, model);
-    switch(type.first[f]) {
-    case PPS::Building_surface_type::ROOF: wrong += (n.z() > 0.1 && plane.first[f] != std::size_t(-1)) ? 0 : 1; break;
+    switch((*type)[f]) {
+    case PPS::Building_surface_type::ROOF: wrong += (n.z() > 0.1 && (*plane)[f] != std::size_t(-1)) ? 0 : 1; break;
     case PPS::Building_surface_type::WALL: wrong += std::abs(n.z()) < 1e-6 ? 0 : 1; break;
     case PPS::Building_surface_type::GROUND: {
       bool on_ground = n.z() < -0.999;
@@ -134,11 +135,12 @@ static void test_building_ply(const std::string& file)
     CHECK(false, "cannot read " << file);
     return;
   }
-  const auto index = points.property_map<int>("segment_index");
-  CHECK(index.second, "building.ply has segment_index");
+  const auto index = PPS::internal::optional_property_map(points.property_map<int>("segment_index"));
+  CHECK(index, "building.ply has segment_index");
+  if(!index) return;
   Mesh model;
   const auto report = CGAL::lod2_building_reconstruction(
-    points, model, CGAL::parameters::point_map(points.point_map()).normal_map(points.normal_map()).plane_index_map(index.first));
+    points, model, CGAL::parameters::point_map(points.point_map()).normal_map(points.normal_map()).plane_index_map(*index));
   std::cout << "building.ply: " << report.planes << " planes, cells " << report.cells_before << " -> "
             << report.cells_after << ", " << report.buildings << " buildings, " << report.faces << " faces, RMS "
             << report.rms_distance << " over " << report.measured_points << " points" << std::endl;

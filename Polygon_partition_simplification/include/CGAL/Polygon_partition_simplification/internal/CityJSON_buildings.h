@@ -80,7 +80,7 @@ void append_CityJSON_solid(std::string& out, const Surface_mesh<Point>& mesh, co
                            const CityJSON_transform& t, CityJSON_vertex_pool& pool)
 {
   using Face_index = typename Surface_mesh<Point>::Face_index;
-  const auto type = mesh.template property_map<Face_index, Building_surface_type>("f:surface_type");
+  const auto type = optional_property_map(mesh.template property_map<Face_index, Building_surface_type>("f:surface_type"));
   std::vector<unsigned> types;
   std::vector<std::array<long long, 3>> ring;
   out += "{\"type\":\"Solid\",\"lod\":\"";
@@ -101,7 +101,7 @@ void append_CityJSON_solid(std::string& out, const Surface_mesh<Point>& mesh, co
       append_JSON_number(out, pool.add(ring[i]));
     }
     out += "]]";
-    types.push_back(type.second ? static_cast<unsigned>(type.first[f]) : 1u);
+    types.push_back(type ? static_cast<unsigned>((*type)[f]) : 1u);
   }
   // the order of the semantic surfaces is that of Building_surface_type
   out += "]],\"semantics\":{\"surfaces\":[{\"type\":\"RoofSurface\"},{\"type\":\"WallSurface\"},"

@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Surface_mesh.h>
@@ -105,13 +106,14 @@ CityJSON_model make_CityJSON_model(const Surface_mesh<Point>& mesh, int decimals
   using Mesh = Surface_mesh<Point>;
   using Face_index = typename Mesh::Face_index;
   using Vertex_index = typename Mesh::Vertex_index;
-  const auto building_map = mesh.template property_map<Face_index, std::size_t>("f:building");
-  const auto type_map = mesh.template property_map<Face_index, Building_surface_type>("f:surface_type");
-  if(!building_map.second)
+  const auto building_map = optional_property_map(mesh.template property_map<Face_index, std::size_t>("f:building"));
+  const auto type_map =
+    optional_property_map(mesh.template property_map<Face_index, Building_surface_type>("f:surface_type"));
+  if(!building_map)
     throw Input_error(Input_error_code::MISSING_PROPERTY,
                       "write_CityJSON: the mesh has no face property map \"f:building\" of type std::size_t "
                       "(the index of the building of each face)");
-  if(!type_map.second)
+  if(!type_map)
     throw Input_error(Input_error_code::MISSING_PROPERTY,
                       "write_CityJSON: the mesh has no face property map \"f:surface_type\" of type "
                       "Polygon_partition_simplification::Building_surface_type (roof, wall or ground)");
@@ -121,11 +123,11 @@ CityJSON_model make_CityJSON_model(const Surface_mesh<Point>& mesh, int decimals
   const double infinity = std::numeric_limits<double>::infinity();
   std::array<double, 3> lowest{{infinity, infinity, infinity}}, highest{{-infinity, -infinity, -infinity}};
   for(Face_index f : mesh.faces()) {
-    if(static_cast<unsigned char>(type_map.first[f]) > static_cast<unsigned char>(Building_surface_type::GROUND))
+    if(static_cast<unsigned char>((*type_map)[f]) > static_cast<unsigned char>(Building_surface_type::GROUND))
       throw Input_error(Input_error_code::INVALID_PARAMETER,
                         "write_CityJSON: face " + std::to_string(std::size_t(f)) +
                         " has a surface type that is not ROOF, WALL or GROUND");
-    faces_of_building[building_map.first[f]].push_back(f);
+    faces_of_building[(*building_map)[f]].push_back(f);
     for(Vertex_index v : mesh.vertices_around_face(mesh.halfedge(f))) {
       const Point& p = mesh.point(v);
       const std::array<double, 3> c{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
@@ -186,7 +188,7 @@ CityJSON_model make_CityJSON_model(const Surface_mesh<Point>& mesh, int decimals
         ring.push_back(inserted.first->second);
       }
       written.rings.push_back(std::move(ring));
-      written.types.push_back(type_map.first[f]);
+      written.types.push_back((*type_map)[f]);
     }
     if(!written.rings.empty())
       model.buildings.push_back(std::move(written));

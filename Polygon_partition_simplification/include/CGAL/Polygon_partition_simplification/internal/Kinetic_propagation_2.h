@@ -30,12 +30,11 @@
 // candidates are searched in a grid of the segments, by increasing distance from the origin
 // (see `refill()`), instead of among all segments.
 
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
 
 #include <CGAL/intersections.h>
-
-#include <boost/variant/get.hpp>
 
 #include <algorithm>
 #include <array>
@@ -399,7 +398,7 @@ private:
   {
     const Line& other = segment == box_candidate ? box_[rays_[r].box_side] : lines_[segment];
     const auto x = CGAL::intersection(lines_[r / 2], other);
-    const Point* p = x ? boost::get<Point>(&*x) : nullptr;
+    const Point* p = get_if<Point>(x);
     CGAL_assertion(p != nullptr); // parallel candidates are skipped
     return *p;
   }

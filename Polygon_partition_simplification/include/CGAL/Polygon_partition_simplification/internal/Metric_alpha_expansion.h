@@ -34,20 +34,11 @@
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
-#include <CGAL/assertions.h>
+// Boost's adjacency_list and boykov_kolmogorov_max_flow, with the false positives of g++ 12
+// silenced in them
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 
-// g++ 12 at -O3 warns that Boost 1.74's max flow may read an uninitialized edge iterator and
-// edge descriptor (boost::optional inside the edge iterator of adjacency_list): false positives
-// located in the Boost headers, silenced there only.
-#if defined(__GNUC__) && !defined(__clang__)
-#  pragma GCC diagnostic push
-#  pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
-#if defined(__GNUC__) && !defined(__clang__)
-#  pragma GCC diagnostic pop
-#endif
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cmath>

@@ -21,12 +21,11 @@
 // the longer segments whose direction is close enough (sorted by angle): a segment of length
 // l with both endpoints within d of a line makes an angle of at most asin(2 d / l) with it.
 
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
 
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
-
-#include <boost/variant/get.hpp>
 
 #include <algorithm>
 #include <array>
@@ -288,7 +287,7 @@ std::size_t snap_collinear_edges(std::vector<typename EK::Segment_2>& edges, dou
       std::size_t kept = 1;
       if(groups.size() >= 2) {
         const auto x = CGAL::intersection(line_of(groups[0]), line_of(groups[1]));
-        const typename EK::Point_2* p = x ? boost::get<typename EK::Point_2>(&*x) : nullptr;
+        const typename EK::Point_2* p = get_if<typename EK::Point_2>(x);
         if(p != nullptr && CGAL::to_double(CGAL::squared_distance(*p, vertices[v])) <= 16 * distance * distance) {
           placed[v] = *p;
           kept = 2;

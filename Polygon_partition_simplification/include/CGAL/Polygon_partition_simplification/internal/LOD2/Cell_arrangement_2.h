@@ -6,6 +6,8 @@
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
+
 #include <CGAL/Arr_extended_dcel.h>
 #include <CGAL/Arr_batched_point_location.h>
 #include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
@@ -117,13 +119,13 @@ private:
   template <class Location>
   static std::size_t cell_at(const Location& where)
   {
-    if(const auto* face = boost::get<typename Arrangement::Face_const_handle>(&where)) return (*face)->data();
-    if(const auto* edge = boost::get<typename Arrangement::Halfedge_const_handle>(&where)) {
+    if(const auto* face = get_if<typename Arrangement::Face_const_handle>(where)) return (*face)->data();
+    if(const auto* edge = get_if<typename Arrangement::Halfedge_const_handle>(where)) {
       auto h = *edge;
       if(h->source()->point() > h->target()->point()) h = h->twin();
       return h->face()->data() != no_cell ? h->face()->data() : h->twin()->face()->data();
     }
-    if(const auto* vertex = boost::get<typename Arrangement::Vertex_const_handle>(&where)) {
+    if(const auto* vertex = get_if<typename Arrangement::Vertex_const_handle>(where)) {
       if((*vertex)->is_isolated()) return no_cell;
       auto around = (*vertex)->incident_halfedges(), start = around;
       do {

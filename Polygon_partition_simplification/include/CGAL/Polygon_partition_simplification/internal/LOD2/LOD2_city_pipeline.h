@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_partition_simplification/City_building.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/LOD2_pipeline.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/lod12_block_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/solid_defect_3.h>
@@ -198,9 +199,9 @@ void add_lod12_block(const Classified_points<Kernel>& tile, const Building_job<K
 template <class Point>
 void set_building_id(Surface_mesh<Point>& mesh, std::size_t id)
 {
-  auto owner = mesh.template property_map<typename Surface_mesh<Point>::Face_index, std::size_t>("f:building");
-  if(!owner.second) return;
-  for(auto f : mesh.faces()) owner.first[f] = id;
+  auto owner = optional_property_map(mesh.template property_map<typename Surface_mesh<Point>::Face_index, std::size_t>("f:building"));
+  if(!owner) return;
+  for(auto f : mesh.faces()) (*owner)[f] = id;
 }
 
 /// runs `f(j)` for every job, largest first, on `threads` threads (TBB) or serially

@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/LOD2_report.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Building_extrusion_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Cell_arrangement_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Height_functions.h>
@@ -22,7 +23,6 @@
 #include <CGAL/simplify_polygon_partition_2.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -223,7 +223,7 @@ void measure_distances(const std::vector<typename Kernel::Point_3>& points, cons
   Mesh triangles = model;
   CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<typename CGAL::Kernel_traits<Point>::Kernel, Primitive>>;
+  using Tree = CGAL::AABB_tree<AABB_traits_3<typename CGAL::Kernel_traits<Point>::Kernel, Primitive>>;
   Tree tree(faces(triangles).first, faces(triangles).second, triangles);
   tree.accelerate_distance_queries();
   std::vector<bool> measured(points.size(), false);

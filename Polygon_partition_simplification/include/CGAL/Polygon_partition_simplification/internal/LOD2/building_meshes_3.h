@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
 #include <CGAL/Polygon_partition_simplification/LOD2_report.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Building_extrusion_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Height_functions.h>
 

@@ -8,11 +8,11 @@
 
 #include <CGAL/Polygon_partition_simplification/Building_planes_3.h>
 #include <CGAL/Polygon_partition_simplification/Building_segment_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/align_outlines_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/roof_outlines_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/runs_along_2.h>
 
-#include <CGAL/Shape_detection/Region_growing/Region_growing_on_point_set/K_neighbor_query.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -46,10 +46,7 @@ std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>>
 plane_contacts(const std::vector<typename Kernel::Point_3>& points, const std::vector<int>& plane_of_point,
                std::size_t neighbors)
 {
-  using Point_3 = typename Kernel::Point_3;
-  CGAL::Shape_detection::Point_set::K_neighbor_query<Kernel, std::vector<Point_3>,
-                                                      CGAL::Identity_property_map<Point_3>>
-    query(points, neighbors, CGAL::Identity_property_map<Point_3>());
+  const Point_neighbors_3<Kernel> query(points, neighbors);
   std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> contacts;
   std::vector<std::size_t> neighborhood;
   for(std::size_t i = 0; i < points.size(); ++i) {
@@ -84,8 +81,7 @@ bool intersection_segment(const std::vector<typename Kernel::Point_3>& points, c
                                 (CGAL::to_double(na.squared_length()) * CGAL::to_double(nb.squared_length())));
   if(sine < std::sin(10.0 * CGAL_PI / 180.0)) return false;
   const auto result = CGAL::intersection(pa, pb);
-  if(!result) return false;
-  const auto* line = boost::get<typename Kernel::Line_3>(&*result);
+  const auto* line = get_if<typename Kernel::Line_3>(result);
   if(line == nullptr) return false;
   const auto origin = line->point(0);
   auto direction = line->to_vector();

@@ -8,9 +8,8 @@
 
 #include <CGAL/Polygon_partition_simplification/Building_planes_3.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 
-#include <CGAL/Shape_detection/Region_growing/Region_growing.h>
-#include <CGAL/Shape_detection/Region_growing/Region_growing_on_point_set.h>
 #include <CGAL/Shape_regularization/regularize_planes.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/pca_estimate_normals.h>
@@ -77,21 +76,12 @@ std::vector<std::vector<std::size_t>> regions_of_region_growing(const std::vecto
     CGAL::pca_estimate_normals<CGAL::Sequential_tag>(
       range, settings.neighbors, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   }
-  namespace RG = CGAL::Shape_detection;
-  using Neighbor_query = RG::Point_set::K_neighbor_query<Kernel, std::vector<Point_with_normal>, Point_map>;
-  using Region_type =
-    RG::Point_set::Least_squares_plane_fit_region<Kernel, std::vector<Point_with_normal>, Point_map, Normal_map>;
-  using Sorting = RG::Point_set::Least_squares_plane_fit_sorting<Kernel, std::vector<Point_with_normal>,
-                                                                 Neighbor_query, Point_map>;
-  using Region_growing = RG::Region_growing<std::vector<Point_with_normal>, Neighbor_query, Region_type,
-                                            typename Sorting::Seed_map>;
-  Neighbor_query neighbor_query(range, settings.neighbors, Point_map());
-  Region_type region_type(range, maximum_distance, settings.maximum_angle, minimum_size, Point_map(), Normal_map());
-  Sorting sorting(range, neighbor_query, Point_map());
-  sorting.sort();
-  Region_growing region_growing(range, neighbor_query, region_type, sorting.seed_map());
-  std::vector<std::vector<std::size_t>> regions;
-  region_growing.detect(std::back_inserter(regions));
+  Plane_region_growing_settings growing;
+  growing.neighbors = settings.neighbors;
+  growing.maximum_distance = maximum_distance;
+  growing.maximum_angle = settings.maximum_angle;
+  growing.minimum_region_size = minimum_size;
+  std::vector<std::vector<std::size_t>> regions = plane_regions_by_region_growing<Kernel>(range, growing);
   for(auto& region : regions) std::sort(region.begin(), region.end());
   return regions;
 }

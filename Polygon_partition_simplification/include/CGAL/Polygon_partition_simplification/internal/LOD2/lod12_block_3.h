@@ -7,6 +7,7 @@
 #include <CGAL/license/Polygon_partition_simplification.h>
 
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/triangulate_rings_2.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -32,10 +33,11 @@ template <class Point>
 std::optional<Footprint_rings> floor_rings(const Surface_mesh<Point>& solid)
 {
   using Mesh = Surface_mesh<Point>;
-  const auto type = solid.template property_map<typename Mesh::Face_index, Building_surface_type>("f:surface_type");
-  if(!type.second) return std::nullopt;
+  const auto type =
+    optional_property_map(solid.template property_map<typename Mesh::Face_index, Building_surface_type>("f:surface_type"));
+  if(!type) return std::nullopt;
   auto is_floor = [&](typename Mesh::Face_index f) {
-    return f != Mesh::null_face() && type.first[f] == Building_surface_type::GROUND;
+    return f != Mesh::null_face() && (*type)[f] == Building_surface_type::GROUND;
   };
   // a floor face is seen clockwise from above: its border halfedges, reversed, turn counterclockwise
   std::map<typename Mesh::Vertex_index, typename Mesh::Halfedge_index> leaving; // border, reversed, by its source

@@ -7,6 +7,7 @@
 #include <CGAL/license/Polygon_partition_simplification.h>
 
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -86,11 +87,11 @@ void snap_solid(Surface_mesh<Point>& mesh, double snap)
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.faces, snapped);
   auto copy = [&](const char* name, auto value) {
     using T = decltype(value);
-    const auto from = mesh.template property_map<Face, T>(name);
-    if(!from.second) return;
+    const auto from = optional_property_map(mesh.template property_map<Face, T>(name));
+    if(!from) return;
     auto to = snapped.template add_property_map<Face, T>(name, value).first;
     std::size_t i = 0;
-    for(Face f : snapped.faces()) to[f] = from.first[Face(typename Mesh::size_type(soup.source[i++]))];
+    for(Face f : snapped.faces()) to[f] = (*from)[Face(typename Mesh::size_type(soup.source[i++]))];
   };
   copy("f:surface_type", Building_surface_type::WALL);
   copy("f:building", std::size_t(0));

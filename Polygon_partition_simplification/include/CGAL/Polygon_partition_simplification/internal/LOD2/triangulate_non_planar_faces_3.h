@@ -7,6 +7,7 @@
 #include <CGAL/license/Polygon_partition_simplification.h>
 
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
@@ -62,9 +63,9 @@ struct Face_property_copier : public CGAL::Polygon_mesh_processing::Triangulate_
   std::size_t current_building = 0, current_plane = 0;
 
   explicit Face_property_copier(Mesh& mesh)
-    : type(mesh.template property_map<Face, Building_surface_type>("f:surface_type").first),
-      building(mesh.template property_map<Face, std::size_t>("f:building").first),
-      plane(mesh.template property_map<Face, std::size_t>("f:plane").first)
+    : type(*optional_property_map(mesh.template property_map<Face, Building_surface_type>("f:surface_type"))),
+      building(*optional_property_map(mesh.template property_map<Face, std::size_t>("f:building"))),
+      plane(*optional_property_map(mesh.template property_map<Face, std::size_t>("f:plane")))
   {}
   void before_subface_creations(Face f)
   {
@@ -87,9 +88,10 @@ template <class Point>
 bool triangulate_non_planar_faces(Surface_mesh<Point>& mesh, double tolerance)
 {
   using Mesh = Surface_mesh<Point>;
-  if(!mesh.template property_map<typename Mesh::Face_index, Building_surface_type>("f:surface_type").second ||
-     !mesh.template property_map<typename Mesh::Face_index, std::size_t>("f:building").second ||
-     !mesh.template property_map<typename Mesh::Face_index, std::size_t>("f:plane").second)
+  using Face = typename Mesh::Face_index;
+  if(!optional_property_map(mesh.template property_map<Face, Building_surface_type>("f:surface_type")) ||
+     !optional_property_map(mesh.template property_map<Face, std::size_t>("f:building")) ||
+     !optional_property_map(mesh.template property_map<Face, std::size_t>("f:plane")))
     return false;
   std::vector<typename Mesh::Face_index> bent;
   for(auto f : mesh.faces())
