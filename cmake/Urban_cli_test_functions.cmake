@@ -36,3 +36,26 @@ function(expect_json_keys name json)
     endif()
   endforeach()
 endfunction()
+
+# expect_mpi_failure(name reason program_name outputs command...): as expect_cli_failure, for a
+# command run by mpirun, whose standard error also holds the launcher's own messages: exactly one
+# line there starts with "<program_name>: error: " and matches `reason`, and none of the files or
+# folders of the list `outputs` (nor a partial file in WORK) exists.
+function(expect_mpi_failure name reason program_name outputs)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "${name}: expected a failure, got exit code 0")
+  endif()
+  string(REGEX MATCHALL "${program_name}: error: [^\n]*" ours "${err}")
+  list(LENGTH ours lines)
+  if(NOT lines EQUAL 1 OR NOT ours MATCHES "${reason}")
+    message(FATAL_ERROR "${name}: not one line with '${reason}': '${err}'")
+  endif()
+  file(GLOB partial "${WORK}/*partial*" "${WORK}/.*partial*")
+  foreach(output IN LISTS outputs)
+    if(EXISTS "${output}" OR partial)
+      message(FATAL_ERROR "${name}: output left behind")
+    endif()
+  endforeach()
+  message(STATUS "${name}: ${ours}")
+endfunction()

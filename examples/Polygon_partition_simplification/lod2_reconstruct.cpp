@@ -3,6 +3,7 @@
 //
 //   lod2_reconstruct INPUT OUTPUT [--planes detect|PROPERTY] [--classes G:B] [--footprints FILE]
 //                    [--threads N] [--lambda1 V] [--lambda2 V] [--epsilon V] [--json]
+//   mpirun -np K lod2_reconstruct_mpi INPUT OUTPUT ...   (a city tile, its buildings dealt out to K ranks)
 //
 // INPUT: points as .ply, .xyz, .off or uncompressed .las (normals used when present; z is
 // vertical). A classified input (a LAS file, or a PLY file with an int or uchar `classification`
@@ -14,6 +15,11 @@
 // points_3/building.ply. OUTPUT: the model as .off, .ply, .obj, CityJSON 1.1 (.city.json) or,
 // for a tile, CityJSON Text Sequences (.city.jsonl). On bad input: a one-line reason, exit code
 // 1, no output file.
+// Under MPI (lod2_reconstruct_mpi, built when CMake finds MPI) every rank reads the tile and
+// splits it into buildings; the buildings are dealt out to the ranks by their numbers of points
+// (the building_filter of lod2_city_reconstruction()), each rank models its own, and the first
+// rank gathers them, writes the output (byte for byte that of one process) and prints the JSON
+// and the errors. A scene runs on one rank only.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -21,10 +27,14 @@
 #include <CGAL/Point_set_3/IO.h>
 #include <CGAL/Lex_optimal_chains/IO/read_las_points.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/lod2_building_reconstruction.h>
 #include <CGAL/lod2_city_reconstruction.h>
+
+#include "City_building_bytes.h"
+#include "Process_group.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -33,8 +43,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <iostream>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -122,12 +134,12 @@ struct Tile
 static bool read_classes(const Point_set& points, std::vector<int>& classes)
 {
   for(const char* name : {"classification", "label"}) {
-    if(auto map = points.property_map<int>(name); map.second) {
-      for(auto i : points) classes.push_back(map.first[i]);
+    if(auto map = PPS::internal::optional_property_map(points.property_map<int>(name))) {
+      for(auto i : points) classes.push_back((*map)[i]);
       return true;
     }
-    if(auto map = points.property_map<unsigned char>(name); map.second) {
-      for(auto i : points) classes.push_back(int(map.first[i]));
+    if(auto map = PPS::internal::optional_property_map(points.property_map<unsigned char>(name))) {
+      for(auto i : points) classes.push_back(int((*map)[i]));
       return true;
     }
   }
@@ -309,25 +321,135 @@ static nlohmann::json city_statistics(const PPS::LOD2_city_report& r)
   return j;
 }
 
-// the buildings of a tile; lists the fallbacks and their reasons on std::cerr
-template <class NamedParameters>
-static nlohmann::json reconstruct_city(const Tile& tile, const std::vector<Polygon_with_holes>& footprints,
-                                       const std::string& output, const NamedParameters& np)
+static double peak_rss_mb()
 {
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;
+}
+
+// ---- the buildings of a tile over the processes of one command (MPI ranks, or one process) ----
+
+// An error already reported by another rank: this rank exits with code 1 and says nothing.
+struct Reported_by_another_rank : std::runtime_error
+{
+  Reported_by_another_rank() : std::runtime_error("reported by another rank") {}
+};
+
+// Every rank calls this with the error it met, if any. If some rank met one, the lowest such
+// rank throws it and the others throw Reported_by_another_rank: one line on stderr.
+static void settle_errors(const Process_group& group, const std::exception_ptr& error)
+{
+  const long long none = static_cast<long long>(group.size());
+  const long long reporter = group.min(error ? static_cast<long long>(group.rank()) : none);
+  if(reporter == none) return;
+  if(reporter == static_cast<long long>(group.rank())) std::rethrow_exception(error);
+  throw Reported_by_another_rank();
+}
+
+// The rank of each building (given by increasing id): by decreasing number of points (then by
+// increasing id), each to the rank with the fewest points so far (then the lowest rank). Every
+// rank splits the tile alike, hence makes the same deal.
+static std::vector<std::size_t> deal_buildings(const std::vector<std::size_t>& points, std::size_t ranks)
+{
+  std::vector<std::size_t> order(points.size()), rank_of(points.size(), 0), load(ranks, 0);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] > points[b]; });
+  for(std::size_t b : order) {
+    const std::size_t r = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
+    rank_of[b] = r;
+    load[r] += points[b];
+  }
+  return rank_of;
+}
+
+// What one rank makes of a tile: the deal of all its buildings, and the buildings of this rank
+struct City_share
+{
+  std::vector<std::size_t> ids, ranks; // every building of the tile, by increasing id, and its rank
   std::vector<City_building> buildings;
   PPS::LOD2_city_report report;
+};
+
+// every rank splits the tile; the building filter keeps the buildings dealt to this rank
+template <class NamedParameters>
+static City_share model_share(const Tile& tile, const std::vector<Polygon_with_holes>& footprints,
+                              const Process_group& group, const NamedParameters& np)
+{
+  City_share share;
+  auto mine = [&share, &group](const std::vector<std::size_t>& ids, const std::vector<std::size_t>& points) {
+    share.ids = ids;
+    share.ranks = deal_buildings(points, group.size());
+    std::vector<bool> keep(ids.size());
+    for(std::size_t b = 0; b < ids.size(); ++b) keep[b] = share.ranks[b] == group.rank();
+    return keep;
+  };
+  const auto filtered = PPS::parameters::building_filter(mine, np);
   auto run = [&](const auto& parameters) {
     if(tile.has_normals)
-      return CGAL::lod2_city_reconstruction(tile.points, buildings, parameters.normal_map(Tile_normal_map()));
-    return CGAL::lod2_city_reconstruction(tile.points, buildings, parameters);
+      return CGAL::lod2_city_reconstruction(tile.points, share.buildings, parameters.normal_map(Tile_normal_map()));
+    return CGAL::lod2_city_reconstruction(tile.points, share.buildings, parameters);
   };
-  if(!tile.has_classes) report = run(PPS::parameters::footprints(footprints, np));
-  else if(footprints.empty()) report = run(PPS::parameters::classification_map(Tile_class_map(), np));
-  else report = run(PPS::parameters::footprints(footprints, PPS::parameters::classification_map(Tile_class_map(), np)));
-  for(const auto& b : buildings)
+  if(!tile.has_classes) share.report = run(PPS::parameters::footprints(footprints, filtered));
+  else if(footprints.empty()) share.report = run(PPS::parameters::classification_map(Tile_class_map(), filtered));
+  else share.report = run(PPS::parameters::footprints(footprints, PPS::parameters::classification_map(Tile_class_map(), filtered)));
+  return share;
+}
+
+// The report of the tile on every rank: the counts and times of the buildings summed over the
+// ranks, the wall-clock times of the slowest rank (the counts of the tile are those of every rank).
+static void gather_city_reports(const Process_group& group, PPS::LOD2_city_report& r)
+{
+  std::vector<double> v = group.sum({double(r.buildings), double(r.buildings_valid), double(r.buildings_lod12_fallback),
+                                     r.planes_seconds, r.segments_seconds, r.partition_seconds, r.simplification_seconds,
+                                     r.lift_seconds, r.extrusion_seconds, r.validation_seconds});
+  r.buildings = std::size_t(v[0]);
+  r.buildings_valid = std::size_t(v[1]);
+  r.buildings_lod12_fallback = std::size_t(v[2]);
+  r.planes_seconds = v[3];
+  r.segments_seconds = v[4];
+  r.partition_seconds = v[5];
+  r.simplification_seconds = v[6];
+  r.lift_seconds = v[7];
+  r.extrusion_seconds = v[8];
+  r.validation_seconds = v[9];
+  r.split_seconds = group.max(r.split_seconds);
+  r.buildings_seconds = group.max(r.buildings_seconds);
+  r.seconds = group.max(r.seconds);
+}
+
+// On the first rank, the buildings of the other ranks (`parts`) added to its own, by increasing
+// id; each building of the deal must come once.
+static void add_gathered_buildings(const std::vector<std::string>& parts, City_share& share)
+{
+  for(std::size_t r = 1; r < parts.size(); ++r) city_buildings_from_bytes(parts[r], share.buildings);
+  std::sort(share.buildings.begin(), share.buildings.end(),
+            [](const City_building& a, const City_building& b) { return a.id < b.id; });
+  bool each_once = share.buildings.size() == share.ids.size();
+  for(std::size_t b = 0; each_once && b < share.ids.size(); ++b) each_once = share.buildings[b].id == share.ids[b];
+  if(!each_once) throw std::runtime_error("the ranks did not model each building of the tile once: do they all read the same input?");
+}
+
+// The buildings of every rank gathered on the first, which lists the fallbacks and their reasons
+// on std::cerr, writes the output and returns the statistics (the other ranks return nothing).
+static nlohmann::json write_gathered_city(const Process_group& group, City_share& share, const std::string& output)
+{
+  gather_city_reports(group, share.report);
+  std::vector<std::string> parts;
+  if(group.size() > 1) parts = group.gather(group.is_root() ? std::string() : city_buildings_to_bytes(share.buildings));
+  const double peak_mb = group.max(peak_rss_mb());
+  if(!group.is_root()) return nlohmann::json();
+  add_gathered_buildings(parts, share);
+  for(const auto& b : share.buildings)
     if(!b.reason.empty()) std::cerr << "lod2_reconstruct: building " << b.id << ": LoD 1.2 only: " << b.reason << std::endl;
-  write_city(buildings, output);
-  return city_statistics(report);
+  write_city(share.buildings, output);
+  nlohmann::json j = city_statistics(share.report);
+  std::vector<std::size_t> per_rank(group.size(), 0);
+  for(std::size_t r : share.ranks) ++per_rank[r];
+  j["ranks"] = group.size();
+  j["buildings_per_rank"] = per_rank;
+  j["peak_rss_mb"] = std::max(peak_mb, peak_rss_mb());
+  return j;
 }
 
 template <class NamedParameters>
@@ -340,9 +462,9 @@ static PPS::LOD2_report reconstruct(const Point_set& points, const std::string& 
   };
   const auto base = np.point_map(points.point_map());
   if(planes == "detect") return with_normals(base);
-  auto property = points.property_map<int>(planes);
-  if(!property.second) throw std::runtime_error("the points have no int property '" + planes + "'");
-  return with_normals(base.plane_index_map(property.first));
+  const auto property = PPS::internal::optional_property_map(points.property_map<int>(planes));
+  if(!property) throw std::runtime_error("the points have no int property '" + planes + "'");
+  return with_normals(base.plane_index_map(*property));
 }
 
 static nlohmann::json scene_statistics(const PPS::LOD2_report& report)
@@ -389,52 +511,86 @@ static nlohmann::json reconstruct_scene(const std::string& input, const std::str
   return scene_statistics(report);
 }
 
-int main(int argc, char** argv)
+struct Options
 {
-  CLI::App app{"LOD2 building models from a point cloud (planes, segments, kinetic partition, simplification, lift)"};
   std::string input, output, planes = "detect", classes = "2:6", footprints_file;
   double lambda1 = 0.5, lambda2 = 5, epsilon = 0;
   int threads = 0;
   bool json = false, walls_at_eaves = false;
-  app.add_option("INPUT", input, "points: .ply, .xyz, .off or .las")->required();
-  app.add_option("OUTPUT", output, "model: .off, .ply, .obj, .city.json (CityJSON 1.1) or .city.jsonl (CityJSON Text Sequences, tiles)")->required();
-  app.add_option("--planes", planes, "detect (region growing, default) or the name of an int point property giving the plane of each point (scenes only)");
-  app.add_option("--classes", classes, "ground and building classes of a classified input, as GROUND[,...]:BUILDING[,...] (default 2:6)");
-  app.add_option("--footprints", footprints_file, "GeoJSON polygons: one building per footprint, made of the building points inside it");
-  app.add_option("--threads", threads, "threads modelling the buildings of a tile, 0 for all cores (default)");
-  app.add_option("--lambda1", lambda1, "weight of the concurrency term of the simplification, default 0.5");
-  app.add_option("--lambda2", lambda2, "weight of the orthogonality term, default 5");
-  app.add_option("--epsilon", epsilon, "longest edge to collapse in the simplification, input units (default: 1% of the half-diagonal)");
-  app.add_flag("--walls-at-eaves", walls_at_eaves,
-               "put the walls at the edges of the roofs, as seen from above (default: on the facades, where facade points show them)");
-  app.add_flag("--json", json, "print one line of JSON statistics");
-  CLI11_PARSE(app, argc, argv);
+};
+
+// The command on every rank: the checks, the input, and the model of a scene (on one rank) or
+// this rank's buildings of a tile, which the first rank then gathers and writes. Returns the
+// statistics on the first rank.
+static nlohmann::json run(const Options& o, const Process_group& group)
+{
+  std::exception_ptr error;
+  nlohmann::json j;
+  City_share share;
+  bool city = false;
   try {
-    if(!(ends_with(output, ".off") || ends_with(output, ".ply") || ends_with(output, ".obj") ||
-         ends_with(output, ".city.json") || ends_with(output, ".city.jsonl")))
-      throw std::runtime_error("OUTPUT must end in .off, .ply, .obj, .city.json or .city.jsonl: " + output);
-    if(threads < 0) throw std::runtime_error("--threads must be >= 0");
-    const auto [ground_classes, building_classes] = parse_classes(classes);
-    const std::vector<Polygon_with_holes> footprints = footprints_file.empty() ? std::vector<Polygon_with_holes>()
-                                                                               : read_footprints(footprints_file);
+    if(!(ends_with(o.output, ".off") || ends_with(o.output, ".ply") || ends_with(o.output, ".obj") ||
+         ends_with(o.output, ".city.json") || ends_with(o.output, ".city.jsonl")))
+      throw std::runtime_error("OUTPUT must end in .off, .ply, .obj, .city.json or .city.jsonl: " + o.output);
+    if(o.threads < 0) throw std::runtime_error("--threads must be >= 0");
+    const auto [ground_classes, building_classes] = parse_classes(o.classes);
+    const std::vector<Polygon_with_holes> footprints = o.footprints_file.empty() ? std::vector<Polygon_with_holes>()
+                                                                                 : read_footprints(o.footprints_file);
     const auto base = PPS::parameters::concurrency_weight(
-      lambda1, PPS::parameters::orthogonality_weight(lambda2, PPS::parameters::walls_at_facades(!walls_at_eaves)));
-    const bool tile_input = ends_with(input, ".las") || ends_with(input, ".laz") || !footprints.empty();
+      o.lambda1, PPS::parameters::orthogonality_weight(o.lambda2, PPS::parameters::walls_at_facades(!o.walls_at_eaves)));
+    const bool tile_input = ends_with(o.input, ".las") || ends_with(o.input, ".laz") || !footprints.empty();
     Tile tile;
-    if(tile_input || ends_with(input, ".ply")) tile = read_tile(input);
-    auto run = [&](const auto& np) {
+    if(tile_input || ends_with(o.input, ".ply")) tile = read_tile(o.input);
+    city = tile.has_classes || !footprints.empty();
+    if(!city && group.size() > 1)
+      throw std::runtime_error("only city tiles (classified points or --footprints) run on several MPI ranks (" +
+                               std::to_string(group.size()) + " here): run a scene on one");
+    auto model = [&](const auto& np) {
       const auto city_np = PPS::parameters::ground_classes(
-        ground_classes, PPS::parameters::building_classes(building_classes, PPS::parameters::number_of_threads(threads, np)));
-      if(tile.has_classes || !footprints.empty())
-        return reconstruct_city(tile, footprints, output, city_np.point_map(Tile_position_map()));
-      return reconstruct_scene(input, planes, output, np);
+        ground_classes, PPS::parameters::building_classes(building_classes, PPS::parameters::number_of_threads(o.threads, np)));
+      if(city) share = model_share(tile, footprints, group, city_np.point_map(Tile_position_map()));
+      else j = reconstruct_scene(o.input, o.planes, o.output, np);
     };
-    nlohmann::json j = epsilon > 0 ? run(PPS::parameters::collapse_distance(epsilon, base)) : run(base);
-    rusage usage;
-    getrusage(RUSAGE_SELF, &usage);
-    j["peak_rss_mb"] = double(usage.ru_maxrss) / 1024.0;
-    if(json) std::cout << j.dump() << std::endl;
-    else std::cout << j["buildings"] << " buildings; model written to " << output << std::endl;
+    if(o.epsilon > 0) model(PPS::parameters::collapse_distance(o.epsilon, base));
+    else model(base);
+  } catch(...) {
+    error = std::current_exception();
+  }
+  settle_errors(group, error);
+  if(city) return write_gathered_city(group, share, o.output);
+  j["peak_rss_mb"] = peak_rss_mb();
+  return j;
+}
+
+int main(int argc, char** argv)
+{
+  Process_group group(argc, argv); // MPI_Init under lod2_reconstruct_mpi
+  CLI::App app{"LOD2 building models from a point cloud (planes, segments, kinetic partition, simplification, lift)"};
+  Options o;
+  app.add_option("INPUT", o.input, "points: .ply, .xyz, .off or .las")->required();
+  app.add_option("OUTPUT", o.output, "model: .off, .ply, .obj, .city.json (CityJSON 1.1) or .city.jsonl (CityJSON Text Sequences, tiles)")->required();
+  app.add_option("--planes", o.planes, "detect (region growing, default) or the name of an int point property giving the plane of each point (scenes only)");
+  app.add_option("--classes", o.classes, "ground and building classes of a classified input, as GROUND[,...]:BUILDING[,...] (default 2:6)");
+  app.add_option("--footprints", o.footprints_file, "GeoJSON polygons: one building per footprint, made of the building points inside it");
+  app.add_option("--threads", o.threads, "threads modelling the buildings of a tile, 0 for all cores (default; per rank under MPI)");
+  app.add_option("--lambda1", o.lambda1, "weight of the concurrency term of the simplification, default 0.5");
+  app.add_option("--lambda2", o.lambda2, "weight of the orthogonality term, default 5");
+  app.add_option("--epsilon", o.epsilon, "longest edge to collapse in the simplification, input units (default: 1% of the half-diagonal)");
+  app.add_flag("--walls-at-eaves", o.walls_at_eaves,
+               "put the walls at the edges of the roofs, as seen from above (default: on the facades, where facade points show them)");
+  app.add_flag("--json", o.json, "print one line of JSON statistics");
+  try {
+    app.parse(argc, argv);
+  } catch(const CLI::ParseError& e) { // --help included; printed once
+    return group.is_root() ? app.exit(e) : e.get_exit_code();
+  }
+  try {
+    const nlohmann::json j = run(o, group);
+    if(!group.is_root()) return 0;
+    if(o.json) std::cout << j.dump() << std::endl;
+    else std::cout << j["buildings"] << " buildings; model written to " << o.output << std::endl;
+  } catch(const Reported_by_another_rank&) {
+    return 1;
   } catch(const std::exception& e) {
     std::cerr << "lod2_reconstruct: error: " << e.what() << std::endl;
     return 1;

@@ -1,8 +1,9 @@
 // Tests of lod2_city_reconstruction() on synthetic classified tiles whose truth is known
 // (synthetic_city.h): one valid solid per building (checked with CGAL's PMP, not only with the
 // package's own check), the model within a stated distance of the truth both ways, the same
-// CityJSON with 1 and 2 threads and with the points shuffled, footprints given and not, and
-// bad input refused. Also the val3dity-like check of a solid on solids made wrong on purpose.
+// CityJSON with 1 and 2 threads and with the points shuffled, the buildings dealt out to several
+// calls by building_filter as in one call, footprints given and not, and bad input refused. Also
+// the val3dity-like check of a solid on solids made wrong on purpose.
 
 #include "synthetic_city.h"
 
@@ -82,6 +83,72 @@ std::size_t terraced_pairs(const T::City& city)
   return std::size_t(std::count(city.kinds.begin(), city.kinds.end(), std::string("terraced_gable")));
 }
 
+std::string city_json_sequence(const std::vector<Building>& buildings)
+{
+  std::ostringstream out;
+  bool ok = PPS::IO::write_CityJSON_sequence(out, buildings);
+  assert(ok);
+  return out.str();
+}
+
+// The buildings dealt out to 3 calls by `building_filter`: each call's filter is called once,
+// with the ids and points of every building; the calls model disjoint sets of buildings, and
+// their union has the ids, the counts and the CityJSON texts of the one call that models them
+// all (`one`, whose report is `report`). A filter that keeps no building gives none, and one
+// that does not return a value per building is refused.
+void test_building_filter(const T::City& city, const std::vector<Building>& one, const PPS::LOD2_city_report& report)
+{
+  constexpr std::size_t shares = 3;
+  std::vector<Building> all;
+  std::size_t buildings = 0, valid = 0, fallback = 0;
+  for(std::size_t share = 0; share < shares; ++share) {
+    std::size_t calls = 0;
+    auto filter = [&](const std::vector<std::size_t>& ids, const std::vector<std::size_t>& points) {
+      ++calls;
+      assert(ids.size() == one.size() && points.size() == one.size());
+      std::vector<bool> keep(ids.size());
+      for(std::size_t b = 0; b < ids.size() && b < one.size(); ++b) {
+        assert(ids[b] == one[b].id && points[b] == one[b].points);
+        keep[b] = ids[b] % shares == share;
+      }
+      return keep;
+    };
+    std::vector<Building> part;
+    const PPS::LOD2_city_report r = reconstruct(city.samples, part, 1, PPS::parameters::building_filter(filter));
+    assert(calls == 1);
+    assert(r.points == report.points && r.building_points == report.building_points && r.ground_points == report.ground_points);
+    assert(r.spacing == report.spacing && r.clusters_too_small == report.clusters_too_small);
+    assert(r.buildings == part.size() && !part.empty());
+    buildings += r.buildings, valid += r.buildings_valid, fallback += r.buildings_lod12_fallback;
+    for(Building& b : part) {
+      assert(b.id % shares == share);
+      all.push_back(std::move(b));
+    }
+  }
+  assert(buildings == report.buildings && valid == report.buildings_valid && fallback == report.buildings_lod12_fallback);
+  std::sort(all.begin(), all.end(), [](const Building& a, const Building& b) { return a.id < b.id; });
+  assert(all.size() == one.size());
+  for(std::size_t b = 0; b < all.size() && b < one.size(); ++b) assert(all[b].id == one[b].id);
+  assert(city_json(all) == city_json(one));
+  assert(city_json_sequence(all) == city_json_sequence(one));
+
+  std::vector<Building> none(1);
+  auto keep_none = [](const std::vector<std::size_t>& ids, const std::vector<std::size_t>&) { return std::vector<bool>(ids.size(), false); };
+  const PPS::LOD2_city_report r = reconstruct(city.samples, none, 1, PPS::parameters::building_filter(keep_none));
+  assert(none.empty() && r.buildings == 0 && r.buildings_valid == 0 && r.points == report.points);
+
+  std::vector<Building> unchanged(1);
+  auto one_value = [](const std::vector<std::size_t>&, const std::vector<std::size_t>&) { return std::vector<bool>{true}; };
+  try {
+    reconstruct(city.samples, unchanged, 1, PPS::parameters::building_filter(one_value));
+    assert(false);
+  } catch(const PPS::Input_error& e) {
+    assert(e.code() == PPS::Input_error_code::INVALID_PARAMETER);
+  }
+  assert(unchanged.size() == 1);
+  std::cout << "building_filter: 3 shares of " << report.buildings << " buildings, their union that of one call" << std::endl;
+}
+
 void test_city_without_footprints()
 {
   T::City_options options;
@@ -111,6 +178,8 @@ void test_city_without_footprints()
   const std::string text = city_json(one);
   assert(text == city_json(two));
   assert(text == city_json(shuffled));
+
+  test_building_filter(city, one, report);
 }
 
 void test_city_with_footprints()

@@ -6,10 +6,14 @@
 // footprint; the same seed gives the same city; the LAS file reads back with the repository's
 // reader (points within 1 mm, classes through its class filter), the PLY file with CGAL's reader,
 // the GeoJSON with nlohmann-json (when found).
+// With arguments, `test_synthetic_city BUILDINGS FILE [FOOTPRINTS]` writes the city of the
+// default options with BUILDINGS buildings to FILE (.las or .ply) and, if given, its footprints
+// to FOOTPRINTS (GeoJSON): the input of the tests of lod2_reconstruct and of measurements.
 
 #include "synthetic_city.h"
 
 #include <CGAL/Lex_optimal_chains/IO/read_las_points.h>
+#include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/IO/read_ply_points.h>
@@ -25,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -34,6 +39,7 @@
 
 namespace T = CGAL::Polygon_partition_simplification::test;
 namespace PMP = CGAL::Polygon_mesh_processing;
+namespace PPS = CGAL::Polygon_partition_simplification;
 using Point_2 = T::Point_2;
 using Point_3 = T::Point_3;
 using Ring = std::vector<Point_2>;
@@ -112,8 +118,8 @@ static bool interiors_meet(const CGAL::Polygon_2<EK>& p, const CGAL::Polygon_2<E
     for(auto f = q.edges_begin(); f != q.edges_end(); ++f) {
       const auto meet = CGAL::intersection(*e, *f);
       if(!meet) continue;
-      if(const EK::Point_2* point = boost::get<EK::Point_2>(&*meet)) cuts.push_back(*point);
-      if(const EK::Segment_2* common = boost::get<EK::Segment_2>(&*meet)) {
+      if(const EK::Point_2* point = PPS::internal::get_if<EK::Point_2>(meet)) cuts.push_back(*point);
+      if(const EK::Segment_2* common = PPS::internal::get_if<EK::Segment_2>(meet)) {
         if(e->to_vector() * f->to_vector() > 0) return true;
         cuts.push_back(common->source()), cuts.push_back(common->target());
       }
@@ -398,8 +404,36 @@ static void report(const std::string& name, const T::City& city, const T::City_o
             << "]}" << std::endl;
 }
 
-int main()
+// the city of the default options with `argv[1]` buildings, written to `argv[2]` (.las or .ply)
+// and its footprints to `argv[3]` (GeoJSON), if given
+static int write_city(int argc, char** argv)
 {
+  T::City_options options;
+  options.buildings = std::size_t(std::strtoul(argv[1], nullptr, 10));
+  const std::string path = argc > 2 ? argv[2] : "";
+  auto ends_with = [&path](const std::string& end) {
+    return path.size() >= end.size() && path.compare(path.size() - end.size(), end.size(), end) == 0;
+  };
+  if(options.buildings == 0 || !(ends_with(".las") || ends_with(".ply"))) {
+    std::cerr << "usage: test_synthetic_city BUILDINGS FILE.las|FILE.ply [FOOTPRINTS.geojson]" << std::endl;
+    return 1;
+  }
+  const T::City city = T::make_city(options);
+  try {
+    if(ends_with(".las")) T::write_city_las(city, path);
+    else T::write_city_ply(city, path);
+    if(argc > 3) T::write_footprints_geojson(city, argv[3]);
+  } catch(const std::exception& e) {
+    std::cerr << "test_synthetic_city: " << e.what() << std::endl;
+    return 1;
+  }
+  report(path, city, options);
+  return 0;
+}
+
+int main(int argc, char** argv)
+{
+  if(argc > 1) return write_city(argc, argv);
   const T::City_options options;
   const T::City city = T::make_city(options);
   report("default", city, options);

@@ -86,12 +86,29 @@ the number of threads nor the order of the points.
     \cgalParamType{int}
     \cgalParamDefault{0}
   \cgalParamNEnd
+  \cgalParamNBegin{building_filter}
+    \cgalParamDescription{which buildings to model, for example when the buildings of a tile are
+                          dealt out to several processes (MPI ranks, machines): called once, after
+                          the split into buildings and before any building is modelled, with the
+                          ids of all the buildings by increasing id and, in the same order, their
+                          numbers of building points; it returns, in that order, whether to model
+                          each. The others are not in `buildings`, nor in the counts and times of
+                          the buildings in the report (`points`, `building_points`,
+                          `ground_points`, `spacing`, `cluster_distance`, `clusters_too_small` and
+                          `footprints_without_points` are those of the whole tile). A building's
+                          model does not depend on which others are modelled: calls that model
+                          disjoint sets of buildings give, together, the buildings of one call
+                          that models them all}
+    \cgalParamType{a callable `std::vector<bool>(const std::vector<std::size_t>& ids, const std::vector<std::size_t>& points)`}
+    \cgalParamDefault{every building}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns the counts and the time of each stage summed over the buildings
 \throws Polygon_partition_simplification::Input_error, with `buildings` unchanged, when a point
 has a non-finite coordinate, a parameter is out of range, a footprint is not a simple polygon,
-or the tile holds no building (code `NO_BUILDING`)
+`building_filter` does not return one value per building, or the tile holds no building (code
+`NO_BUILDING`; a filter that keeps no building is no error: `buildings` is then empty)
 */
 template <class PointRange, class Point, class NamedParameters = parameters::Default_named_parameters>
 Polygon_partition_simplification::LOD2_city_report

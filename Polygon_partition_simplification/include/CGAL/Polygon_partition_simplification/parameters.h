@@ -43,6 +43,7 @@ enum ground_classes_t { ground_classes };
 enum building_classes_t { building_classes };
 enum footprints_t { footprints };
 enum number_of_threads_t { number_of_threads };
+enum building_filter_t { building_filter };
 
 } // namespace internal_np
 
@@ -121,6 +122,8 @@ CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(building_classes)
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(footprints)
 /// number of threads of the parallel stages
 CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(number_of_threads)
+/// which buildings of a city tile to model, chosen from the ids and sizes of all of them (a callable)
+CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER(building_filter)
 
 #undef CGAL_POLYGON_PARTITION_SIMPLIFICATION_PARAMETER
 

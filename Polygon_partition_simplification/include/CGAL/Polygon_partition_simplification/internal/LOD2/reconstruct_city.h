@@ -150,6 +150,33 @@ std::vector<Building_job<Kernel>> cluster_jobs(const Classified_points<Kernel>& 
   return jobs;
 }
 
+/// the jobs kept by the named parameter `building_filter` (every job without it), which is
+/// called once with the ids and the numbers of building points of all the jobs, by increasing id
+template <class Kernel, class NamedParameters>
+void filter_jobs(std::vector<Building_job<Kernel>>& jobs, const NamedParameters& np)
+{
+  namespace pps_np = Polygon_partition_simplification::internal_np;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, pps_np::building_filter_t>::value) {
+    std::vector<std::size_t> ids, points;
+    for(const Building_job<Kernel>& job : jobs) {
+      ids.push_back(job.id);
+      points.push_back(job.members.size());
+    }
+    const std::vector<bool> keep = parameters::get_parameter(np, pps_np::building_filter)(ids, points);
+    if(keep.size() != jobs.size())
+      throw_input_error(Input_error_code::INVALID_PARAMETER,
+                        "building_filter returned " + std::to_string(keep.size()) + " values for " +
+                          std::to_string(jobs.size()) + " buildings: it must return one per building");
+    std::vector<Building_job<Kernel>> kept;
+    for(std::size_t j = 0; j < jobs.size(); ++j)
+      if(keep[j]) kept.push_back(std::move(jobs[j]));
+    jobs = std::move(kept);
+  } else {
+    CGAL_USE(jobs);
+    CGAL_USE(np);
+  }
+}
+
 template <class PointRange, class Point, class NamedParameters>
 LOD2_city_report reconstruct_city(const PointRange& range, std::vector<City_building<Point>>& buildings,
                                   const NamedParameters& np)
@@ -191,6 +218,7 @@ LOD2_city_report reconstruct_city(const PointRange& range, std::vector<City_buil
     throw_input_error(Input_error_code::NO_BUILDING, "no building: no cluster of building points" +
                                                     std::string(has_footprints ? " in a footprint" : "") + " has " +
                                                     std::to_string(city_minimum_building_points) + " points");
+  filter_jobs(jobs, np);
   report.split_seconds = total.time();
   buildings = model_buildings<Kernel, Point>(tile, jobs, settings, city_ground_margin_spacings * report.spacing,
                                              threads, np, report);
