@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_partition_simplification/Kinetic_partition_report.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cstdlib>
 #include <iostream>
 #include <vector>
@@ -19,7 +20,6 @@ namespace PPS = CGAL::Polygon_partition_simplification;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using kinetic_stress::Generator;
 
-#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
 
 namespace {
 
@@ -39,13 +39,13 @@ std::pair<std::size_t, std::size_t> run_generator(Generator g, unsigned long lon
     const auto scene = kinetic_stress::scene(g, seed, 2000);
     const kinetic_stress::Scene_result r = kinetic_stress::run_scene(scene);
     if(r.refused) std::cerr << kinetic_stress::name(g) << " seed " << seed << " refused: " << r.error << std::endl;
-    CHECK(!r.refused);
+    assert(!r.refused);
     // the package's own check never calls valid what the oracle finds invalid
     if(r.package_says_valid && !r.normalized_defect.empty())
       std::cerr << kinetic_stress::name(g) << " seed " << seed << ": " << r.normalized_defect << std::endl;
-    CHECK(!r.package_says_valid || r.normalized_defect.empty());
+    assert(!r.package_says_valid || r.normalized_defect.empty());
     if(r.uncovered > 0) std::cerr << kinetic_stress::name(g) << " seed " << seed << ": segments uncovered" << std::endl;
-    CHECK(r.uncovered == 0);
+    assert(r.uncovered == 0);
     invalid += r.defect.empty() ? 0 : 1;
     invalid_normalized += r.normalized_defect.empty() ? 0 : 1;
   }
@@ -67,12 +67,12 @@ void test_duplicates()
                                            {{1, 1}, {3, 2}}};
   PPS::Kinetic_partition_report report;
   const PPS::Line_partition_2<K> p = CGAL::kinetic_partition_2(doubled, PPS::parameters::report(&report));
-  CHECK(p.is_valid());
-  CHECK(report.segments == 9 && report.equal_segments == 2 && report.overlapping_segments == 2);
-  CHECK(report.grown_segments == 5 && report.propagations == 1 && report.events > 0);
+  assert(p.is_valid());
+  assert(report.segments == 9 && report.equal_segments == 2 && report.overlapping_segments == 2);
+  assert(report.grown_segments == 5 && report.propagations == 1 && report.events > 0);
   const PPS::Line_partition_2<K> q = CGAL::kinetic_partition_2(extended);
-  CHECK(p.number_of_vertices() == q.number_of_vertices() && p.number_of_edges() == q.number_of_edges());
-  CHECK(p.number_of_cells() == q.number_of_cells());
+  assert(p.number_of_vertices() == q.number_of_vertices() && p.number_of_edges() == q.number_of_edges());
+  assert(p.number_of_cells() == q.number_of_cells());
   // the same points (the lines are numbered by their metrics, which differ)
   auto sorted_points = [](const PPS::Line_partition_2<K>& x) {
     std::vector<K::Point_2> points;
@@ -80,14 +80,14 @@ void test_duplicates()
     std::sort(points.begin(), points.end());
     return points;
   };
-  CHECK(sorted_points(p) == sorted_points(q));
+  assert(sorted_points(p) == sorted_points(q));
   // the metric counts every segment: the line of the doubled diagonal has two
   std::size_t counted = 0;
   for(const auto& l : p.lines()) counted += l.number_of_segments;
-  CHECK(counted == 9 + 4); // and the four sides of the rectangle
+  assert(counted == 9 + 4); // and the four sides of the rectangle
   // no duplicate: nothing merged
   CGAL::kinetic_partition_2(base, PPS::parameters::report(&report));
-  CHECK(report.equal_segments == 0 && report.overlapping_segments == 0 && report.grown_segments == 5);
+  assert(report.equal_segments == 0 && report.overlapping_segments == 0 && report.grown_segments == 5);
 }
 
 // The segments that lod2_reconstruct gives to the kinetic partition for CGAL's points_3/hippo2.ply
@@ -100,16 +100,16 @@ void test_lod2_segments()
                                                   {"data/lod2_sphere_20k_normal_segments.txt", 0.0345893}};
   for(const auto& [file, spacing] : files) {
     const auto scene = kinetic_stress::read_segments(file);
-    CHECK(scene.size() > 100);
+    assert(scene.size() > 100);
     std::vector<kinetic_stress::Scene_result> results{kinetic_stress::run_scene(scene)};
     for(double distance = 2 * spacing; distance > spacing / 5; distance /= 2)
       results.push_back(kinetic_stress::run_scene(scene, PPS::parameters::collinearity_distance(distance)));
     for(const auto& r : results) {
       if(!r.defect.empty() || !r.normalized_defect.empty()) std::cerr << file << ": " << r.defect << r.normalized_defect << std::endl;
-      CHECK(!r.refused && r.defect.empty() && r.normalized_defect.empty() && r.package_says_valid);
+      assert(!r.refused && r.defect.empty() && r.normalized_defect.empty() && r.package_says_valid);
       if(r.uncovered > 0 || r.propagations > 1)
         std::cerr << file << ": " << r.uncovered << " segments uncovered, " << r.propagations << " propagations" << std::endl;
-      CHECK(r.uncovered == 0 && r.propagations == 1);
+      assert(r.uncovered == 0 && r.propagations == 1);
     }
   }
 }
@@ -124,10 +124,10 @@ int main()
   // 720); invalid before points too close were rounded apart (star 0, 1, 2, 8, 12 and offset 5,
   // 6, 18, 274: points that coincide or edges that cross, with the coordinates the user gets or
   // in the normalized frame)
-  for(unsigned long long seed : {0ull, 1ull, 2ull, 3ull, 4ull}) CHECK(run_generator(Generator::duplicates, seed, 1).first == 0);
-  for(unsigned long long seed : {212ull, 720ull}) CHECK(run_generator(Generator::tiny, seed, 1).first == 0);
-  for(unsigned long long seed : {0ull, 1ull, 2ull, 8ull, 12ull}) CHECK(run_generator(Generator::star, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
-  for(unsigned long long seed : {5ull, 6ull, 18ull, 274ull}) CHECK(run_generator(Generator::offset, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
+  for(unsigned long long seed : {0ull, 1ull, 2ull, 3ull, 4ull}) assert(run_generator(Generator::duplicates, seed, 1).first == 0);
+  for(unsigned long long seed : {212ull, 720ull}) assert(run_generator(Generator::tiny, seed, 1).first == 0);
+  for(unsigned long long seed : {0ull, 1ull, 2ull, 8ull, 12ull}) assert(run_generator(Generator::star, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
+  for(unsigned long long seed : {5ull, 6ull, 18ull, 274ull}) assert(run_generator(Generator::offset, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
   // the plan: scenes per generator and the invalid partitions measured on them (0 where the
   // generator has no known defect)
   const Plan plans[] = {{Generator::grid, 800, 0, 0},     {Generator::collinear, 400, 0, 0},
@@ -138,7 +138,7 @@ int main()
     const auto [invalid, invalid_normalized] = run_generator(plan.generator, 0, plan.scenes);
     std::cout << kinetic_stress::name(plan.generator) << ": " << plan.scenes << " scenes, " << invalid
               << " invalid partitions (" << invalid_normalized << " in the normalized frame)" << std::endl;
-    CHECK(invalid <= plan.maximum_invalid && invalid_normalized <= plan.maximum_invalid_normalized);
+    assert(invalid <= plan.maximum_invalid && invalid_normalized <= plan.maximum_invalid_normalized);
   }
   return 0;
 }

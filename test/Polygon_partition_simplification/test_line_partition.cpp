@@ -29,7 +29,6 @@ using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 namespace PPS = CGAL::Polygon_partition_simplification;
 using Partition = PPS::Line_partition_2<K>;
 
-#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
 
 std::vector<K::Segment_2> random_segments(std::size_t n, unsigned seed)
 {
@@ -50,7 +49,7 @@ double total_area(const Partition& p)
   p.cells(std::back_inserter(cells));
   double area = 0;
   for(const auto& c : cells) {
-    CHECK(c.outer_boundary().is_simple());
+    assert(c.outer_boundary().is_simple());
     area += CGAL::to_double(c.outer_boundary().area());
     for(auto h = c.holes_begin(); h != c.holes_end(); ++h) area += CGAL::to_double(h->area());
   }
@@ -131,12 +130,12 @@ void test_crossing_distance_at_concurrent_lines()
     const std::array<EK::Point_2, 4> box{EK::Point_2(-10, -10), EK::Point_2(10, -10), EK::Point_2(10, 10), EK::Point_2(-10, 10)};
     KP crossing(segments, box, 0, 0.5);
     crossing.run();
-    CHECK(crossing.extent(0).target() != EK::Point_2(ix, iy)); // went on
+    assert(crossing.extent(0).target() != EK::Point_2(ix, iy)); // went on
     KP stopping(segments, box, 0, 0); // without the option it stops at I
     stopping.run();
-    CHECK(stopping.extent(0).target() == EK::Point_2(ix, iy));
+    assert(stopping.extent(0).target() == EK::Point_2(ix, iy));
   }
-  CHECK(found == 3);
+  assert(found == 3);
 }
 
 // The rules of the kinetic framework, checked on the extents by brute force (exact), in a box
@@ -165,7 +164,7 @@ void test_kinetic_rules(const std::vector<K::Segment_2>& input)
     return std::min(CGAL::squared_distance(p, segments[j].source()), CGAL::squared_distance(p, segments[j].target()));
   };
   for(std::size_t i = 0; i < segments.size(); ++i) {
-    CHECK(extents[i].has_on(segments[i].source()) && extents[i].has_on(segments[i].target()));
+    assert(extents[i].has_on(segments[i].source()) && extents[i].has_on(segments[i].target()));
     for(const EK::Point_2& end : {extents[i].source(), extents[i].target()}) {
       if(segments[i].has_on(end)) continue; // did not grow on this side
       if(on_box(end)) continue;
@@ -173,7 +172,7 @@ void test_kinetic_rules(const std::vector<K::Segment_2>& input)
       bool stopped = false;
       for(std::size_t j = 0; j < segments.size() && !stopped; ++j)
         if(j != i && extents[j].has_on(end) && arrival2(j, end) <= arrival2(i, end)) stopped = true;
-      CHECK(stopped);
+      assert(stopped);
     }
     for(std::size_t j = i + 1; j < segments.size(); ++j) {
       const auto x = CGAL::intersection(extents[i], extents[j]);
@@ -182,7 +181,7 @@ void test_kinetic_rules(const std::vector<K::Segment_2>& input)
       const bool end_of_one = *p == extents[i].source() || *p == extents[i].target() ||
                               *p == extents[j].source() || *p == extents[j].target();
       // a proper crossing happens only where both initial segments already cross
-      if(!end_of_one) CHECK(segments[i].has_on(*p) && segments[j].has_on(*p));
+      if(!end_of_one) assert(segments[i].has_on(*p) && segments[j].has_on(*p));
     }
   }
   // the same extents for the segments in another order
@@ -194,7 +193,7 @@ void test_kinetic_rules(const std::vector<K::Segment_2>& input)
   again.run();
   for(std::size_t k = 0; k < order.size(); ++k) {
     const EK::Segment_2 a = again.extent(k), b = extents[order[k]];
-    CHECK((a.source() == b.source() && a.target() == b.target()) || (a.source() == b.target() && a.target() == b.source()));
+    assert((a.source() == b.source() && a.target() == b.target()) || (a.source() == b.target() && a.target() == b.source()));
   }
 }
 
@@ -203,33 +202,33 @@ void test_simple_configurations()
   // one segment: the box cut in two
   {
     Partition p = CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 0}}});
-    CHECK(p.is_valid());
-    CHECK(p.number_of_lines() == 5 && p.number_of_cells() == 2);
+    assert(p.is_valid());
+    assert(p.number_of_lines() == 5 && p.number_of_cells() == 2);
   }
   // a T: the short segment below stops at the long one
   {
     std::vector<K::Segment_2> s{{{0, 0}, {10, 0}}, {{5, -4}, {5, -1}}};
     Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid() && p.number_of_cells() == 3);
+    assert(p.is_valid() && p.number_of_cells() == 3);
   }
   // the last to arrive stops: segment 0 grows right and reaches x = 3 at time 2, segment 1
   // grows up and gets there at time 0.5 first, so segment 0 stops and 1 goes on to the box
   {
     std::vector<K::Segment_2> s{{{0, 0}, {1, 0}}, {{3, -1}, {3, -0.5}}, {{-6, 6}, {12, 6}}};
     Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid());
+    assert(p.is_valid());
     double rightmost = -1e9;
     for(std::size_t e = 0; e < p.number_of_edges(); ++e) {
       const auto seg = p.segment(e);
       if(std::abs(seg.source().y()) < 1e-9 && std::abs(seg.target().y()) < 1e-9)
         rightmost = std::max({rightmost, seg.source().x(), seg.target().x()});
     }
-    CHECK(std::abs(rightmost - 3) < 1e-9);
+    assert(std::abs(rightmost - 3) < 1e-9);
   }
   // two crossing segments: four cells
   {
     std::vector<K::Segment_2> s{{{0, 0}, {2, 2}}, {{0, 2}, {2, 0}}};
-    CHECK(CGAL::kinetic_partition_2(s).number_of_cells() == 4);
+    assert(CGAL::kinetic_partition_2(s).number_of_cells() == 4);
   }
   // the two pieces of one wall, collinear but for the roundings of their coordinates: the
   // smallest rectangle of their nearly flat hull has a first side that rounds to a point
@@ -237,9 +236,9 @@ void test_simple_configurations()
   {
     std::vector<K::Segment_2> s{{{0.0, 0.0}, {3.464101615137755, 1.9999999999999998}},
                                 {{5.196152422706632, 2.9999999999999996}, {8.660254037844387, 4.999999999999999}}};
-    CHECK(CGAL::kinetic_partition_2(s).is_valid());
+    assert(CGAL::kinetic_partition_2(s).is_valid());
     s = {{{0, 0}, {1, 1}}, {{2, 2}, {3, 3.0000000000000004}}};
-    CHECK(CGAL::kinetic_partition_2(s).is_valid());
+    assert(CGAL::kinetic_partition_2(s).is_valid());
   }
   // an X of the diagonals of a square: the lines pass through the corners of the box, which
   // are rounded, and a diagonal that misses its corner by 1e-16 ended at a point with the
@@ -247,8 +246,8 @@ void test_simple_configurations()
   for(const double side : {1., 2., 3., 7., 10., 13., 100., 1e-3, 12345.6789}) {
     std::vector<K::Segment_2> s{{{0, 0}, {side, side}}, {{0, side}, {side, 0}}};
     Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid() && p.number_of_cells() == 4);
-    CHECK(CGAL::simplify_polygon_partition_2(p).cells_after == 4 && p.is_valid());
+    assert(p.is_valid() && p.number_of_cells() == 4);
+    assert(CGAL::simplify_polygon_partition_2(p).cells_after == 4 && p.is_valid());
   }
   // Chains closed by ends that meet at time 0 and hang at a single point: the cell around them
   // was not a simple polygon (the partition was invalid); a ray released from one of their
@@ -261,12 +260,12 @@ void test_simple_configurations()
        std::vector<K::Segment_2>{{{1, 2}, {3, 1}}, {{4, 3}, {3, 4}}, {{4, 0}, {3, 3}}, {{3, 0}, {1, 2}},
                                  {{3, 3}, {2, 1}}, {{4, 0}, {3, 2}}, {{0, 0}, {2, 3}}}}) {
     const Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid());
+    assert(p.is_valid());
     // the same partition for the segments in another order, or reversed
     std::vector<K::Segment_2> other(s.rbegin(), s.rend());
     for(auto& x : other) x = x.opposite();
     const Partition q = CGAL::kinetic_partition_2(other);
-    CHECK(q.is_valid() && q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
+    assert(q.is_valid() && q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
           q.number_of_edges() == p.number_of_edges() && q.number_of_cells() == p.number_of_cells());
     // the corners stay: every endpoint shared by two segments is a point of the partition
     for(const auto& x : s)
@@ -276,7 +275,7 @@ void test_simple_configurations()
         bool found = false;
         for(std::size_t v = 0; v < p.number_of_vertices() && !found; ++v)
           found = CGAL::squared_distance(p.point(v), end) < 1e-20;
-        CHECK(found);
+        assert(found);
       }
   }
   // a line that passes within rounding errors of a corner of the bounding rectangle (the
@@ -286,13 +285,13 @@ void test_simple_configurations()
   {
     std::vector<K::Segment_2> s{{{1, 2}, {1, 4}}, {{0, 0}, {1, 1}}, {{0, 3}, {1, 2}}};
     const Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid() && p.number_of_cells() == 3);
+    assert(p.is_valid() && p.number_of_cells() == 3);
   }
   // exactly collinear segments share one line
   {
     std::vector<K::Segment_2> s{{{0, 0}, {1, 1}}, {{3, 3}, {4, 4}}, {{0, 4}, {1, 4}}};
     Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid() && p.number_of_lines() == 4 + 2);
+    assert(p.is_valid() && p.number_of_lines() == 4 + 2);
   }
 }
 
@@ -302,7 +301,7 @@ void test_against_line_arrangement()
 {
   const auto s = random_segments(25, 7);
   Partition p = CGAL::kinetic_partition_2(s, PPS::parameters::maximum_number_of_crossings(std::size_t(1000)));
-  CHECK(p.is_valid());
+  assert(p.is_valid());
   // the box of the partition: its four fixed lines
   std::vector<EK::Segment_2> curves;
   std::vector<EK::Point_2> corners;
@@ -327,14 +326,14 @@ void test_against_line_arrangement()
   }
   CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<EK>> oracle;
   CGAL::insert(oracle, all.begin(), all.end());
-  CHECK(p.number_of_cells() == oracle.number_of_faces() - 1);
+  assert(p.number_of_cells() == oracle.number_of_faces() - 1);
   // kinetic partitions without crossings have fewer cells
-  CHECK(CGAL::kinetic_partition_2(s).number_of_cells() < p.number_of_cells());
+  assert(CGAL::kinetic_partition_2(s).number_of_cells() < p.number_of_cells());
   // one crossing allowed: in between
   const std::size_t one = CGAL::kinetic_partition_2(s, PPS::parameters::maximum_number_of_crossings(std::size_t(1))).number_of_cells();
-  CHECK(one >= CGAL::kinetic_partition_2(s).number_of_cells() && one <= p.number_of_cells());
+  assert(one >= CGAL::kinetic_partition_2(s).number_of_cells() && one <= p.number_of_cells());
   // the crossing distance makes more connections
-  CHECK(CGAL::kinetic_partition_2(s, PPS::parameters::crossing_distance(5.)).number_of_cells() >=
+  assert(CGAL::kinetic_partition_2(s, PPS::parameters::crossing_distance(5.)).number_of_cells() >=
         CGAL::kinetic_partition_2(s).number_of_cells());
 }
 
@@ -343,7 +342,7 @@ void test_cells_and_invariance()
 {
   const auto s = random_segments(60, 3);
   Partition p = CGAL::kinetic_partition_2(s);
-  CHECK(p.is_valid());
+  assert(p.is_valid());
   // the area of the rectangle = the sum of the cell areas
   double box_area = 0;
   {
@@ -353,12 +352,12 @@ void test_cells_and_invariance()
       for(auto l : v.lines) fixed += p.lines()[l].is_fixed ? 1 : 0;
       if(fixed == 2) corners.push_back(p.point(std::size_t(&v - p.vertices().data())));
     }
-    CHECK(corners.size() == 4);
+    assert(corners.size() == 4);
     std::vector<K::Point_2> hull;
     CGAL::convex_hull_2(corners.begin(), corners.end(), std::back_inserter(hull));
     box_area = CGAL::to_double(CGAL::Polygon_2<K>(hull.begin(), hull.end()).area());
   }
-  CHECK(std::abs(total_area(p) - box_area) < 1e-6 * box_area);
+  assert(std::abs(total_area(p) - box_area) < 1e-6 * box_area);
   // exact transformations: rotation by 90 degrees, integer translation, scaling by 4
   std::vector<K::Segment_2> moved;
   for(const auto& seg : s) {
@@ -366,7 +365,7 @@ void test_cells_and_invariance()
     moved.emplace_back(f(seg.source()), f(seg.target()));
   }
   Partition q = CGAL::kinetic_partition_2(moved);
-  CHECK(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
+  assert(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
         q.number_of_edges() == p.number_of_edges() && q.number_of_cells() == p.number_of_cells());
 }
 
@@ -380,8 +379,8 @@ void test_builders()
     sq.push_back(K::Point_2(x + 1, 1)); sq.push_back(K::Point_2(x, 1));
   }
   Partition p = PPS::line_partition_from_polygons_2(squares);
-  CHECK(p.is_valid());
-  CHECK(p.number_of_lines() == 5 && p.number_of_vertices() == 6 && p.number_of_edges() == 7 && p.number_of_cells() == 2);
+  assert(p.is_valid());
+  assert(p.number_of_lines() == 5 && p.number_of_vertices() == 6 && p.number_of_edges() == 7 && p.number_of_cells() == 2);
   // cells that touch at a corner (parcels of a cadastral map): only the unbounded face is
   // pinched, the partition is valid and can be simplified
   auto square_at = [](double x, double y, double size) {
@@ -392,18 +391,18 @@ void test_builders()
   };
   {
     Partition corner = PPS::line_partition_from_polygons_2(std::vector<CGAL::Polygon_2<K>>{square_at(0, 0, 1), square_at(1, 1, 1)});
-    CHECK(corner.is_valid() && corner.number_of_cells() == 2);
+    assert(corner.is_valid() && corner.number_of_cells() == 2);
     CGAL::simplify_polygon_partition_2(corner);
-    CHECK(corner.is_valid() && corner.number_of_cells() == 2);
+    assert(corner.is_valid() && corner.number_of_cells() == 2);
     // the same two squares inside a larger one: the cell around them has a pinched hole
     const Partition inside = PPS::line_partition_from_polygons_2(
       std::vector<CGAL::Polygon_2<K>>{square_at(-1, -1, 4), square_at(0, 0, 1), square_at(1, 1, 1)});
-    CHECK(!inside.is_valid());
+    assert(!inside.is_valid());
     // a diamond touching the side of a square from inside: the cell around it is pinched
     CGAL::Polygon_2<K> diamond;
     for(const auto& [x, y] : {std::pair(2., 0.), std::pair(3., 1.), std::pair(2., 2.), std::pair(1., 1.)}) diamond.push_back(K::Point_2(x, y));
     const Partition touching = PPS::line_partition_from_polygons_2(std::vector<CGAL::Polygon_2<K>>{square_at(0, 0, 4), diamond});
-    CHECK(!touching.is_valid());
+    assert(!touching.is_valid());
     // in a kinetic partition the contact point lies inside the rectangle: the cell around the
     // two squares would have a pinched hole
     auto walls = [](double gap) {
@@ -415,7 +414,7 @@ void test_builders()
       return s;
     };
     // (it was not valid; a ray released from one of the corners now splits that cell)
-    CHECK(CGAL::kinetic_partition_2(walls(0)).is_valid() && CGAL::kinetic_partition_2(walls(0.01)).is_valid());
+    assert(CGAL::kinetic_partition_2(walls(0)).is_valid() && CGAL::kinetic_partition_2(walls(0.01)).is_valid());
   }
   // a polygon with a hole (a courtyard): 8 lines, 8 points, 8 edges, 2 cells (the ring and the yard)
   CGAL::Polygon_2<K> outer, yard;
@@ -423,8 +422,8 @@ void test_builders()
   for(const auto& [x, y] : {std::pair(1., 1.), std::pair(1., 3.), std::pair(3., 3.), std::pair(3., 1.)}) yard.push_back(K::Point_2(x, y));
   std::vector<CGAL::Polygon_with_holes_2<K>> courtyard{CGAL::Polygon_with_holes_2<K>(outer, &yard, &yard + 1)};
   Partition h = PPS::line_partition_from_polygons_2(courtyard);
-  CHECK(h.is_valid());
-  CHECK(h.number_of_lines() == 8 && h.number_of_vertices() == 8 && h.number_of_edges() == 8 && h.number_of_cells() == 2);
+  assert(h.is_valid());
+  assert(h.number_of_lines() == 8 && h.number_of_vertices() == 8 && h.number_of_edges() == 8 && h.number_of_cells() == 2);
   // the same from a CGAL arrangement, with a dangling edge that is dropped
   CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<EK>> arrangement;
   std::vector<EK::Segment_2> segments{{EK::Point_2(0, 0), EK::Point_2(2, 0)}, {EK::Point_2(2, 0), EK::Point_2(2, 1)},
@@ -432,23 +431,23 @@ void test_builders()
                                       {EK::Point_2(1, 0), EK::Point_2(1, 1)}, {EK::Point_2(2, 1), EK::Point_2(3, 2)}};
   CGAL::insert(arrangement, segments.begin(), segments.end());
   Partition a = PPS::line_partition_from_arrangement_2<K>(arrangement);
-  CHECK(a.is_valid() && a.number_of_lines() == 5 && a.number_of_edges() == 7 && a.number_of_cells() == 2);
+  assert(a.is_valid() && a.number_of_lines() == 5 && a.number_of_edges() == 7 && a.number_of_cells() == 2);
   // GeoJSON: one feature per cell, closed rings
   std::vector<Partition::Polygon_with_holes_2> cells;
   a.cells(std::back_inserter(cells));
   std::ostringstream os;
-  CHECK(PPS::IO::write_GeoJSON(os, cells));
+  assert(PPS::IO::write_GeoJSON(os, cells));
   const std::string text = os.str();
   std::size_t features = 0;
   for(std::size_t at = text.find("\"Feature\""); at != std::string::npos; at = text.find("\"Feature\"", at + 1)) ++features;
-  CHECK(features == 2);
+  assert(features == 2);
 }
 
 template <class F>
 void expect_error(PPS::Input_error_code code, F f)
 {
-  try { f(); } catch(const PPS::Input_error& e) { CHECK(e.code() == code); return; }
-  CHECK(!"no error");
+  try { f(); } catch(const PPS::Input_error& e) { assert(e.code() == code); return; }
+  assert(!"no error");
 }
 
 void test_bad_input()
@@ -461,8 +460,8 @@ void test_bad_input()
                                       {K::Point_2(0, 1), K::Point_2(1, 2)},
                                       {K::Point_2(0.5, -1), K::Point_2(0.6, 3)}};
     const Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid() && p.number_of_lines() == 7);
-    for(const auto& l : p.lines()) CHECK(std::isfinite(l.coefficients[0]) && std::isfinite(l.coefficients[1]) && std::isfinite(l.coefficients[2]));
+    assert(p.is_valid() && p.number_of_lines() == 7);
+    for(const auto& l : p.lines()) assert(std::isfinite(l.coefficients[0]) && std::isfinite(l.coefficients[1]) && std::isfinite(l.coefficients[2]));
   }
   using C = PPS::Input_error_code;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -472,7 +471,7 @@ void test_bad_input()
   { // a segment given twice is merged: the partition of the segment alone
     const Partition twice = CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}, {{1, 1}, {0, 0}}});
     const Partition once = CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}});
-    CHECK(twice.is_valid() && twice.number_of_cells() == 2 && twice.number_of_edges() == once.number_of_edges());
+    assert(twice.is_valid() && twice.number_of_cells() == 2 && twice.number_of_edges() == once.number_of_edges());
   }
   expect_error(C::INVALID_PARAMETER, [] {
     CGAL::kinetic_partition_2(std::vector<K::Segment_2>{{{0, 0}, {1, 1}}}, PPS::parameters::crossing_distance(-1.));
@@ -497,12 +496,12 @@ void test_bad_input()
   });
   // C arrays are ranges too
   const K::Segment_2 walls[4] = {{{0, 0}, {2, 0}}, {{2, 0}, {2, 1}}, {{2, 1}, {0, 1}}, {{0, 1}, {0, 0}}};
-  CHECK(CGAL::kinetic_partition_2(walls).number_of_cells() >= 1);
+  assert(CGAL::kinetic_partition_2(walls).number_of_cells() >= 1);
   CGAL::Polygon_2<K> squares[2];
   for(double x : {0., 1.})
     for(const auto& [dx, dy] : {std::pair(0., 0.), std::pair(1., 0.), std::pair(1., 1.), std::pair(0., 1.)})
       squares[std::size_t(x)].push_back(K::Point_2(x + dx, dy));
-  CHECK(PPS::line_partition_from_polygons_2(squares).number_of_cells() == 2);
+  assert(PPS::line_partition_from_polygons_2(squares).number_of_cells() == 2);
 }
 
 // The validity check on hand-made partitions of the unit square (lines x = 0, x = 1, y = 0,
@@ -527,18 +526,18 @@ void test_validity_check()
   // valid: the square cut in four by the two middle lines
   {
     const Partition p = with({{4, 4, 8}, {4, 8, 5}, {5, 6, 8}, {5, 8, 7}});
-    CHECK(p.defect().empty() && p.defective_edges().empty() && p.number_of_cells() == 4);
+    assert(p.defect().empty() && p.defective_edges().empty() && p.number_of_cells() == 4);
     std::vector<Partition::Polygon_with_holes_2> cells;
     p.cells(std::back_inserter(cells));
-    CHECK(cells.size() == 4);
-    for(const auto& c : cells) CHECK(std::abs(c.outer_boundary().area() - 0.25) < 1e-12);
+    assert(cells.size() == 4);
+    for(const auto& c : cells) assert(std::abs(c.outer_boundary().area() - 0.25) < 1e-12);
   }
   // the middle edges cross without a point at the center
   {
     const Partition p = with({{4, 4, 5}, {5, 6, 7}});
-    CHECK(p.defect().find("cross") != std::string::npos);
-    CHECK(p.defective_edges() == std::vector<std::size_t>({8, 9}));
-    CHECK(p.number_of_cells() == 4); // counted on the arrangement, which adds the crossing
+    assert(p.defect().find("cross") != std::string::npos);
+    assert(p.defective_edges() == std::vector<std::size_t>({8, 9}));
+    assert(p.number_of_cells() == 4); // counted on the arrangement, which adds the crossing
   }
   auto reported = [](const Partition& p, std::size_t e) {
     const std::vector<std::size_t> d = p.defective_edges();
@@ -547,38 +546,38 @@ void test_validity_check()
   // an edge dangles into the square (its cell's boundary also passes twice through its foot)
   {
     const Partition p = with({{4, 4, 8}});
-    CHECK(p.defect().find("dangles") != std::string::npos);
-    CHECK(reported(p, 8));
-    CHECK(p.number_of_cells() == 1);
+    assert(p.defect().find("dangles") != std::string::npos);
+    assert(reported(p, 8));
+    assert(p.number_of_cells() == 1);
   }
   // the vertical middle line cuts the square in two, the left half of the horizontal one cuts
   // the left half in two: valid, three cells
   {
     const Partition p = with({{4, 4, 8}, {4, 8, 5}, {5, 6, 8}});
-    CHECK(p.is_valid() && p.number_of_cells() == 3);
+    assert(p.is_valid() && p.number_of_cells() == 3);
   }
   // the right half of the horizontal middle line, from the right side, without the vertical
   // line: it dangles
   {
     const Partition p = with({{4, 4, 8}, {4, 8, 5}, {5, 8, 7}, {5, 6, 8}});
-    CHECK(p.is_valid() && p.number_of_cells() == 4);
+    assert(p.is_valid() && p.number_of_cells() == 4);
     const Partition q = with({{5, 8, 7}});
-    CHECK(q.defect().find("dangles") != std::string::npos && reported(q, 8) && q.number_of_cells() == 1);
+    assert(q.defect().find("dangles") != std::string::npos && reported(q, 8) && q.number_of_cells() == 1);
   }
   // a point at infinity: the two vertical sides "meet"
   {
     points.push_back({{0, 1}});
     const Partition p = with({{0, 3, 9}});
     points.pop_back();
-    CHECK(p.defect().find("infinity") != std::string::npos);
-    CHECK(p.defective_edges() == std::vector<std::size_t>({8}));
-    CHECK(p.number_of_cells() == 1); // the edge to infinity bounds nothing
-    CHECK(p.exact_arrangement().number_of_edges() == 8);
+    assert(p.defect().find("infinity") != std::string::npos);
+    assert(p.defective_edges() == std::vector<std::size_t>({8}));
+    assert(p.number_of_cells() == 1); // the edge to infinity bounds nothing
+    assert(p.exact_arrangement().number_of_edges() == 8);
   }
   // an edge off its line
   {
     const Partition p = with({{5, 4, 8}});
-    CHECK(p.defect().find("off its line") != std::string::npos);
+    assert(p.defect().find("off its line") != std::string::npos);
   }
   // With the sides fixed (a kinetic partition), the cells must tile the square. The line
   // x = -0.5 with its points on the bottom and top sides extended past the corners 0 and 3:
@@ -590,17 +589,17 @@ void test_validity_check()
     const std::vector<Partition::Vertex> corners_and_two{{{0, 2}}, {{1, 2}}, {{1, 3}}, {{0, 3}}, {{2, 4}}, {{3, 4}}};
     const std::vector<Partition::Edge> edges{{2, 4, 0}, {2, 0, 1}, {1, 1, 2}, {3, 2, 3}, {3, 3, 5}, {0, 3, 0}, {4, 4, 5}};
     const Partition free_sides(Partition::Frame(), fixed_lines, corners_and_two, edges);
-    CHECK(free_sides.is_valid() && free_sides.number_of_cells() == 2);
+    assert(free_sides.is_valid() && free_sides.number_of_cells() == 2);
     for(int side = 0; side < 4; ++side) fixed_lines[side].is_fixed = true;
     const Partition p(Partition::Frame(), fixed_lines, corners_and_two, edges);
-    CHECK(p.defect().find("tile") != std::string::npos);
-    CHECK(p.defective_edges() == std::vector<std::size_t>({6}));
+    assert(p.defect().find("tile") != std::string::npos);
+    assert(p.defective_edges() == std::vector<std::size_t>({6}));
     // the valid partition in four with fixed sides stays valid
     std::vector<Partition::Edge> four = sides;
     for(const Partition::Edge& e : std::vector<Partition::Edge>{{4, 4, 8}, {4, 8, 5}, {5, 6, 8}, {5, 8, 7}}) four.push_back(e);
     std::vector<Line> fixed_square = lines;
     for(int side = 0; side < 4; ++side) fixed_square[side].is_fixed = true;
-    CHECK(Partition(Partition::Frame(), fixed_square, points, four).is_valid());
+    assert(Partition(Partition::Frame(), fixed_square, points, four).is_valid());
   }
   // The square with fixed sides cut by x = 0.5 and a square ring of side 0.2 centered at
   // (cx, 0.5): in the left cell it is valid (a cell with a hole), outside the square it is
@@ -624,8 +623,8 @@ void test_validity_check()
       std::vector<Partition::Edge> e = cut_square;
       for(const Partition::Edge& r : std::vector<Partition::Edge>{{y0, 6, 7}, {x1, 7, 8}, {y1, 8, 9}, {x0, 9, 6}}) e.push_back(r);
       const Partition p(Partition::Frame(), l, pts, e);
-      if(cx > 0) CHECK(p.is_valid() && p.number_of_cells() == 3);
-      else CHECK(p.defect().find("tile") != std::string::npos &&
+      if(cx > 0) assert(p.is_valid() && p.number_of_cells() == 3);
+      else assert(p.defect().find("tile") != std::string::npos &&
                  p.defective_edges() == std::vector<std::size_t>({7, 8, 9, 10}));
     }
   }
@@ -660,7 +659,7 @@ void test_faces_against_arrangement()
     }
     Arrangement arrangement;
     CGAL::insert_non_intersecting_curves(arrangement, segments.begin(), segments.end());
-    CHECK(arrangement.number_of_edges() == edges.size()); // no crossing: one arrangement edge per edge
+    assert(arrangement.number_of_edges() == edges.size()); // no crossing: one arrangement edge per edge
     auto edge_at = [&](Arrangement::Halfedge_const_handle h) {
       const std::array<double, 2> a{{h->source()->point().x(), h->source()->point().y()}};
       const std::array<double, 2> b{{h->target()->point().x(), h->target()->point().y()}};
@@ -701,15 +700,15 @@ void test_faces_against_arrangement()
     }
     std::sort(expected.begin(), expected.end());
     expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
-    CHECK(p.defective_edges() == expected);
-    CHECK(p.is_valid() == expected.empty());
+    assert(p.defective_edges() == expected);
+    assert(p.is_valid() == expected.empty());
     invalid += expected.empty() ? 0 : 1;
     opened += p.defect().find("tile") != std::string::npos ? 1 : 0; // a side removed
     ++total;
   }
   std::cout << "faces against the arrangement: " << invalid << " invalid of " << total << ", " << opened
             << " with the rectangle opened" << std::endl;
-  CHECK(invalid >= total / 4 && invalid < total && opened > 0); // every verdict was exercised
+  assert(invalid >= total / 4 && invalid < total && opened > 0); // every verdict was exercised
 }
 
 // The grid used by the kinetic propagation and the validity check lists every segment in the
@@ -743,7 +742,7 @@ void test_segment_grid()
     }
   }
   const PPS::internal::Segment_grid_2 grid(segments, {{-100, -100}}, {{100, 100}});
-  CHECK(grid.cell_size() < 20);
+  assert(grid.cell_size() < 20);
   for(std::uint32_t i = 0; i < segments.size(); ++i) {
     const auto& s = segments[i];
     for(int k = 0; k <= 1000; ++k) {
@@ -752,7 +751,7 @@ void test_segment_grid()
       const int cx = grid.column(x), cy = grid.row(y);
       bool listed = false;
       grid.for_each_in_ring(cx, cy, 0, [&](std::uint32_t j) { listed = listed || j == i; });
-      CHECK(listed);
+      assert(listed);
     }
   }
 }
@@ -801,10 +800,10 @@ void test_crossings_with_far_points()
       if(meet(i, j)) expected.emplace_back(i, j);
   const auto found = PPS::internal::crossing_edge_pairs<K>(points, edges, true, [](const auto&, const auto&) { return true; });
   std::cout << "crossings with far points: " << found.size() << " pairs (brute force " << expected.size() << ")" << std::endl;
-  CHECK(found == expected);
+  assert(found == expected);
   std::size_t far_pairs = 0;
   for(const auto& [i, j] : expected) if(i >= 400 || j >= 400) ++far_pairs;
-  CHECK(far_pairs >= 6);
+  assert(far_pairs >= 6);
   // with some edges known free of crossings: only the pairs with a suspect are reported
   const auto some = PPS::internal::crossing_edge_pairs<K>(points, edges, true, [&](const auto& a, const auto&) {
     return a[0] < 0; // the edges whose first end has x < 0
@@ -812,14 +811,14 @@ void test_crossings_with_far_points()
   std::vector<std::pair<std::size_t, std::size_t>> expected_some;
   for(const auto& [i, j] : expected)
     if(points[edges[i][0]][0] < 0 || points[edges[j][0]][0] < 0) expected_some.push_back({i, j});
-  CHECK(some == expected_some);
+  assert(some == expected_some);
   // the edges known free of crossings given as a set of coordinates (inserted either way round)
   PPS::internal::Segment_coordinate_set known(8);
   for(std::size_t e = 0; e < edges.size(); e += 2)
     known.insert(points[edges[e][e % 4 == 0 ? 0 : 1]], points[edges[e][e % 4 == 0 ? 1 : 0]]);
   for(std::size_t e = 0; e < edges.size(); ++e) {
-    CHECK(known.contains(points[edges[e][0]], points[edges[e][1]]) == (e % 2 == 0));
-    CHECK(known.contains(points[edges[e][1]], points[edges[e][0]]) == (e % 2 == 0));
+    assert(known.contains(points[edges[e][0]], points[edges[e][1]]) == (e % 2 == 0));
+    assert(known.contains(points[edges[e][1]], points[edges[e][0]]) == (e % 2 == 0));
   }
   const auto odd = PPS::internal::crossing_edge_pairs<K>(points, edges, true, [&](const auto& a, const auto& b) {
     return !known.contains(a, b);
@@ -827,7 +826,7 @@ void test_crossings_with_far_points()
   std::vector<std::pair<std::size_t, std::size_t>> expected_odd;
   for(const auto& [i, j] : expected)
     if(i % 2 == 1 || j % 2 == 1) expected_odd.push_back({i, j});
-  CHECK(odd == expected_odd);
+  assert(odd == expected_odd);
   // The same reference edges with their grid kept (Crossing_free_edges): the same pairs, and
   // the same again for a state with some reference edges gone, others duplicated by a second
   // edge on the same two points, and its points renumbered.
@@ -835,8 +834,8 @@ void test_crossings_with_far_points()
   for(std::size_t e = 0; e < edges.size(); e += 2)
     reference.push_back({{points[edges[e][0]][0], points[edges[e][0]][1], points[edges[e][1]][0], points[edges[e][1]][1]}});
   const PPS::internal::Crossing_free_edges crossing_free(reference);
-  CHECK(crossing_free.crossing_pairs<K>(points, edges, true) == expected_odd);
-  CHECK(crossing_free.crossing_pairs<K>(points, edges, false).size() == 1);
+  assert(crossing_free.crossing_pairs<K>(points, edges, true) == expected_odd);
+  assert(crossing_free.crossing_pairs<K>(points, edges, false).size() == 1);
   {
     std::vector<std::array<double, 2>> renumbered(points.rbegin(), points.rend());
     const std::size_t last = points.size() - 1;
@@ -857,8 +856,8 @@ void test_crossings_with_far_points()
     const auto found_state = crossing_free.crossing_pairs<K>(renumbered, state, true);
     std::cout << "crossings of a state against kept reference edges: " << found_state.size() << " pairs (brute force "
               << expected_state.size() << ")" << std::endl;
-    CHECK(found_state == expected_state);
-    CHECK(!expected_state.empty());
+    assert(found_state == expected_state);
+    assert(!expected_state.empty());
   }
 }
 
@@ -889,13 +888,13 @@ void test_nearly_collinear_walls()
     ++scenes;
     invalid_without += CGAL::kinetic_partition_2(s, PPS::parameters::collinearity_distance(0.)).is_valid() ? 0 : 1;
     Partition p = CGAL::kinetic_partition_2(s);
-    CHECK(p.is_valid());
+    assert(p.is_valid());
     // the six pieces are on one line (at most 6 + 1 + 4 lines: the other walls may be collinear)
-    CHECK(p.number_of_lines() <= 6 + 1 + 4);
+    assert(p.number_of_lines() <= 6 + 1 + 4);
     std::vector<K::Segment_2> shuffled = s;
     std::shuffle(shuffled.begin(), shuffled.end(), rng);
     const Partition q = CGAL::kinetic_partition_2(shuffled);
-    CHECK(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
+    assert(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
           q.number_of_edges() == p.number_of_edges());
     CGAL::simplify_polygon_partition_2(p); // a valid input is accepted
     if(seed == 1)
@@ -904,7 +903,7 @@ void test_nearly_collinear_walls()
   }
   std::cout << "nearly collinear walls: " << invalid_without << " of " << scenes
             << " scenes invalid without moving the pieces onto one line" << std::endl;
-  CHECK(invalid_without >= scenes / 2);
+  assert(invalid_without >= scenes / 2);
 }
 
 // The same for polygons: two rotated rectangles side by side, whose sides have vertices in
@@ -945,19 +944,19 @@ void test_nearly_collinear_polygon_edges()
     invalid_without +=
       PPS::line_partition_from_polygons_2(polygons, PPS::parameters::collinearity_distance(0.)).is_valid() ? 0 : 1;
     Partition p = PPS::line_partition_from_polygons_2(polygons);
-    CHECK(p.is_valid());
+    assert(p.is_valid());
     // y = 0, x = 0, x = 10, x = 20, y = 5 (right roof), the two halves of the bent left roof;
     // 5 for the two triangles, 3 for the third
-    CHECK(p.number_of_lines() == (t_junction ? 15u : 12u) && p.number_of_cells() == polygons.size());
+    assert(p.number_of_lines() == (t_junction ? 15u : 12u) && p.number_of_cells() == polygons.size());
     std::vector<Partition::Polygon_with_holes_2> cells;
     p.cells(std::back_inserter(cells));
     double area = 0, expected = 0;
     for(const auto& cell : cells) area += cell.outer_boundary().area();
     for(const auto& polygon : polygons) expected += std::abs(polygon.area());
-    CHECK(std::abs(area - expected) < 1e-9 * area);
+    assert(std::abs(area - expected) < 1e-9 * area);
     std::reverse(polygons.begin(), polygons.end());
     const Partition q = PPS::line_partition_from_polygons_2(polygons);
-    CHECK(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
+    assert(q.number_of_lines() == p.number_of_lines() && q.number_of_vertices() == p.number_of_vertices() &&
           q.number_of_edges() == p.number_of_edges());
     CGAL::simplify_polygon_partition_2(p); // a valid input is accepted
     if(seed == 1)
@@ -967,7 +966,7 @@ void test_nearly_collinear_polygon_edges()
   }
   std::cout << "nearly collinear polygon edges: " << invalid_without << " of " << scenes
             << " scenes invalid without moving the pieces onto one line" << std::endl;
-  CHECK(invalid_without >= scenes / 2);
+  assert(invalid_without >= scenes / 2);
 }
 
 int main()

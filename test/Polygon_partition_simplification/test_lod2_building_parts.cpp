@@ -40,6 +40,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -56,7 +57,6 @@
 #include <string>
 #include <vector>
 
-#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
 
 namespace PPS = CGAL::Polygon_partition_simplification;
 
@@ -233,16 +233,16 @@ Labels run_and_check(const Instance& instance, const Labels& start)
   const Expansion expansion(instance.edges, instance.unary, instance.pairwise);
   Labels labels = start;
   const Expansion::Result result = expansion.minimize(labels);
-  CHECK(labels.size() == instance.number_of_vertices);
+  assert(labels.size() == instance.number_of_vertices);
   for(std::size_t l : labels)
-    CHECK(l < instance.number_of_labels);
-  CHECK(result.number_of_cycles >= 1);
-  CHECK(std::abs(result.energy - expansion.energy(labels)) <= 1e-12 * (1 + std::abs(result.energy)));
-  CHECK(result.energy <= expansion.energy(start));
+    assert(l < instance.number_of_labels);
+  assert(result.number_of_cycles >= 1);
+  assert(std::abs(result.energy - expansion.energy(labels)) <= 1e-12 * (1 + std::abs(result.energy)));
+  assert(result.energy <= expansion.energy(start));
   // deterministic
   Labels again = start;
   const Expansion::Result second = expansion.minimize(again);
-  CHECK(again == labels && second.energy == result.energy && second.number_of_cycles == result.number_of_cycles);
+  assert(again == labels && second.energy == result.energy && second.number_of_cycles == result.number_of_cycles);
   return labels;
 }
 
@@ -260,10 +260,10 @@ void test_alpha_expansion_against_brute_force()
                                        : Expansion(instance.edges, instance.unary, instance.pairwise).unary_minimum_labels();
       const Labels labels = run_and_check(instance, start);
       const double ours = energy(instance, labels), best = optimum(instance);
-      CHECK(is_expansion_local_minimum(instance, labels));
-      CHECK(ours >= best - 1e-9 * (1 + best));
+      assert(is_expansion_local_minimum(instance, labels));
+      assert(ours >= best - 1e-9 * (1 + best));
       if(instance.ratio > 0) {
-        CHECK(ours <= 2 * instance.ratio * best + 1e-9 * (1 + best));
+        assert(ours <= 2 * instance.ratio * best + 1e-9 * (1 + best));
         ++bounded;
       }
       ++instances;
@@ -294,9 +294,9 @@ void test_alpha_expansion_against_CGAL()
     Labels theirs = start;
     CGAL::alpha_expansion_graphcut(instance.edges, instance.weights, cost_matrix, theirs);
     const double best = optimum(instance), ours_energy = energy(instance, ours), theirs_energy = energy(instance, theirs);
-    CHECK(is_expansion_local_minimum(instance, ours));
-    CHECK(ours_energy <= 2 * best + 1e-9 * (1 + best));
-    CHECK(theirs_energy <= 2 * best + 1e-9 * (1 + best));
+    assert(is_expansion_local_minimum(instance, ours));
+    assert(ours_energy <= 2 * best + 1e-9 * (1 + best));
+    assert(theirs_energy <= 2 * best + 1e-9 * (1 + best));
     if(is_expansion_local_minimum(instance, theirs))
       ++theirs_local_minima;
     if(ours_energy < theirs_energy - 1e-9 * (1 + best))
@@ -318,7 +318,7 @@ void test_alpha_expansion_special_cases()
     instance.pairwise = [](std::size_t, std::size_t, std::size_t) { return 0.; };
     const Labels labels = run_and_check(instance, random_labels(random, instance));
     for(std::size_t v = 0; v < instance.number_of_vertices; ++v)
-      CHECK(labels[v] == std::size_t(std::min_element(instance.unary[v].begin(), instance.unary[v].end()) -
+      assert(labels[v] == std::size_t(std::min_element(instance.unary[v].begin(), instance.unary[v].end()) -
                                      instance.unary[v].begin()));
   }
   // forbidden labels: never kept where an allowed one exists, even from a start on forbidden
@@ -327,15 +327,15 @@ void test_alpha_expansion_special_cases()
     const Instance instance = random_instance(random, Metric_kind(trial % 4), 0.4);
     const Labels labels = run_and_check(instance, random_labels(random, instance));
     for(std::size_t v = 0; v < instance.number_of_vertices; ++v)
-      CHECK(instance.unary[v][labels[v]] != infinity);
+      assert(instance.unary[v][labels[v]] != infinity);
     const double ours = energy(instance, labels), best = optimum(instance);
     const Expansion expansion(instance.edges, instance.unary, instance.pairwise);
-    CHECK(expansion.forbidden_cost() > 0 || std::none_of(instance.unary.begin(), instance.unary.end(),
+    assert(expansion.forbidden_cost() > 0 || std::none_of(instance.unary.begin(), instance.unary.end(),
           [](const std::vector<double>& row) { return std::count(row.begin(), row.end(), infinity) > 0; }));
-    CHECK(std::abs(ours - expansion.energy(labels)) <= 1e-9 * (1 + ours));
-    CHECK(is_expansion_local_minimum(instance, labels));
+    assert(std::abs(ours - expansion.energy(labels)) <= 1e-9 * (1 + ours));
+    assert(is_expansion_local_minimum(instance, labels));
     if(instance.ratio > 0)
-      CHECK(ours <= 2 * instance.ratio * best + 1e-9 * (1 + best));
+      assert(ours <= 2 * instance.ratio * best + 1e-9 * (1 + best));
   }
   // a vertex with no allowed label: the others still get allowed ones
   {
@@ -343,7 +343,7 @@ void test_alpha_expansion_special_cases()
     std::fill(instance.unary[0].begin(), instance.unary[0].end(), infinity);
     const Labels labels = run_and_check(instance, random_labels(random, instance));
     for(std::size_t v = 1; v < instance.number_of_vertices; ++v)
-      CHECK(instance.unary[v][labels[v]] != infinity);
+      assert(instance.unary[v][labels[v]] != infinity);
   }
 }
 
@@ -382,7 +382,7 @@ void test_alpha_expansion_on_a_grid()
     for(std::size_t l = 0; l < labels; ++l) {
       Labels changed = result;
       changed[v] = l;
-      CHECK(energy(instance, changed) >= e - 1e-9 * e);
+      assert(energy(instance, changed) >= e - 1e-9 * e);
     }
   std::cout << "grid 30 x 30, 8 labels: energy " << energy(instance, start) << " -> " << e << std::endl;
 }
@@ -456,7 +456,7 @@ Mesh make_mesh(const std::vector<Building_faces>& buildings, bool with_building,
         face.push_back(found->second);
       }
       const Face f = mesh.add_face(face);
-      CHECK(f != Mesh::null_face());
+      assert(f != Mesh::null_face());
       if(with_building) building_map[f] = building.index;
       if(with_type) type_map[f] = building.types[i];
     }
@@ -468,12 +468,12 @@ Mesh make_mesh(const std::vector<Building_faces>& buildings, bool with_building,
 void check_CityJSON(const std::string& text, const std::vector<Building_faces>& buildings, double scale)
 {
   const json j = json::parse(text);
-  CHECK(j.at("type") == "CityJSON" && j.at("version") == "1.1");
+  assert(j.at("type") == "CityJSON" && j.at("version") == "1.1");
   const json& transform = j.at("transform");
-  CHECK(transform.at("scale").size() == 3 && transform.at("translate").size() == 3);
+  assert(transform.at("scale").size() == 3 && transform.at("translate").size() == 3);
   std::array<double, 3> translate;
   for(int i = 0; i < 3; ++i) {
-    CHECK(transform["scale"][i].get<double>() == scale);
+    assert(transform["scale"][i].get<double>() == scale);
     translate[i] = transform["translate"][i].get<double>();
   }
   // vertices: integers, no two equal, all used, each within half a unit of an original point
@@ -485,7 +485,7 @@ void check_CityJSON(const std::string& text, const std::vector<Building_faces>& 
     for(const auto& face : building.faces)
       originals.insert(face.begin(), face.end());
   for(const json& v : vertices) {
-    CHECK(v.size() == 3 && v[0].is_number_integer() && v[1].is_number_integer() && v[2].is_number_integer());
+    assert(v.size() == 3 && v[0].is_number_integer() && v[1].is_number_integer() && v[2].is_number_integer());
     distinct.insert({{v[0].get<long long>(), v[1].get<long long>(), v[2].get<long long>()}});
     decoded.emplace_back(v[0].get<long long>() * scale + translate[0], v[1].get<long long>() * scale + translate[1],
                          v[2].get<long long>() * scale + translate[2]);
@@ -494,44 +494,44 @@ void check_CityJSON(const std::string& text, const std::vector<Building_faces>& 
     for(const Point& q : originals)
       nearest = (std::min)(nearest, (std::max)({std::abs(q.x() - decoded.back().x()), std::abs(q.y() - decoded.back().y()),
                                                 std::abs(q.z() - decoded.back().z())}));
-    CHECK(nearest <= scale / 2 + 1e-7);
+    assert(nearest <= scale / 2 + 1e-7);
   }
-  CHECK(distinct.size() == vertices.size());
+  assert(distinct.size() == vertices.size());
   std::vector<bool> used(vertices.size(), false);
 
   const json& objects = j.at("CityObjects");
-  CHECK(objects.size() == buildings.size());
+  assert(objects.size() == buildings.size());
   for(const Building_faces& building : buildings) {
     const std::string id = "building_" + std::to_string(building.index);
-    CHECK(objects.contains(id));
+    assert(objects.contains(id));
     const json& object = objects[id];
-    CHECK(object.at("type") == "Building" && object.at("geometry").size() == 1);
+    assert(object.at("type") == "Building" && object.at("geometry").size() == 1);
     const json& geometry = object["geometry"][0];
-    CHECK(geometry.at("type") == "Solid" && geometry.at("lod").is_string() && geometry["lod"] == "2.2");
+    assert(geometry.at("type") == "Solid" && geometry.at("lod").is_string() && geometry["lod"] == "2.2");
     const json& boundaries = geometry.at("boundaries");
-    CHECK(boundaries.size() == 1);  // one shell
+    assert(boundaries.size() == 1);  // one shell
     const json& shell = boundaries[0];
-    CHECK(shell.size() == building.faces.size());
+    assert(shell.size() == building.faces.size());
     const json& semantics = geometry.at("semantics");
     const char* type_names[] = {"RoofSurface", "WallSurface", "GroundSurface"};
-    CHECK(semantics.at("surfaces").size() == 3);
+    assert(semantics.at("surfaces").size() == 3);
     for(int t = 0; t < 3; ++t)
-      CHECK(semantics["surfaces"][t].at("type") == type_names[t]);
-    CHECK(semantics.at("values").size() == 1 && semantics["values"][0].size() == shell.size());
+      assert(semantics["surfaces"][t].at("type") == type_names[t]);
+    assert(semantics.at("values").size() == 1 && semantics["values"][0].size() == shell.size());
 
     // each surface is one face of the building, with its orientation and its type
     std::vector<std::size_t> points_of_shell;
     std::vector<std::vector<std::size_t>> polygons;
     std::vector<bool> matched(building.faces.size(), false);
     for(std::size_t s = 0; s < shell.size(); ++s) {
-      CHECK(shell[s].size() == 1);  // an outer ring, no hole
+      assert(shell[s].size() == 1);  // an outer ring, no hole
       const json& ring = shell[s][0];
-      CHECK(ring.size() >= 3);
+      assert(ring.size() >= 3);
       std::vector<std::size_t> polygon;
       for(const json& index : ring) {
-        CHECK(index.is_number_unsigned() && index.get<std::size_t>() < vertices.size());
+        assert(index.is_number_unsigned() && index.get<std::size_t>() < vertices.size());
         const std::size_t i = index.get<std::size_t>();
-        CHECK(std::find(polygon.begin(), polygon.end(), i) == polygon.end());
+        assert(std::find(polygon.begin(), polygon.end(), i) == polygon.end());
         polygon.push_back(i);
         used[i] = true;
       }
@@ -546,13 +546,13 @@ void check_CityJSON(const std::string& text, const std::vector<Building_faces>& 
             same = CGAL::squared_distance(face[(i + shift) % face.size()], decoded[polygon[i]]) <= 3 * scale * scale;
           if(same) {
             ++matches;
-            CHECK(!matched[f]);
+            assert(!matched[f]);
             matched[f] = true;
-            CHECK(semantics["values"][0][s] == static_cast<unsigned int>(building.types[f]));
+            assert(semantics["values"][0][s] == static_cast<unsigned int>(building.types[f]));
           }
         }
       }
-      CHECK(matches == 1);
+      assert(matches == 1);
       polygons.push_back(polygon);
     }
 
@@ -566,16 +566,16 @@ void check_CityJSON(const std::string& text, const std::vector<Building_faces>& 
           points.push_back(decoded[i]);
         i = inserted.first->second;
       }
-    CHECK(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons));
+    assert(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons));
     Mesh solid;
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, solid);
-    CHECK(CGAL::is_closed(solid));
-    CHECK(CGAL::Polygon_mesh_processing::triangulate_faces(solid));
-    CHECK(CGAL::Polygon_mesh_processing::is_outward_oriented(solid));
+    assert(CGAL::is_closed(solid));
+    assert(CGAL::Polygon_mesh_processing::triangulate_faces(solid));
+    assert(CGAL::Polygon_mesh_processing::is_outward_oriented(solid));
     const double volume = CGAL::Polygon_mesh_processing::volume(solid);
-    CHECK(std::abs(volume - building.volume) <= 300 * scale);  // area 300 at most, moved by the rounding
+    assert(std::abs(volume - building.volume) <= 300 * scale);  // area 300 at most, moved by the rounding
   }
-  CHECK(std::all_of(used.begin(), used.end(), [](bool u) { return u; }));
+  assert(std::all_of(used.begin(), used.end(), [](bool u) { return u; }));
 }
 
 template <class Function>
@@ -584,11 +584,11 @@ void check_throws(Function f, PPS::Input_error_code code)
   try {
     f();
   } catch(const PPS::Input_error& error) {
-    CHECK(error.code() == code);
+    assert(error.code() == code);
     std::cout << "  refused: " << error.what() << std::endl;
     return;
   }
-  CHECK(!"an Input_error was expected");
+  assert(!"an Input_error was expected");
 }
 
 // a decimal comma and digit grouping, as some locales have
@@ -605,21 +605,21 @@ void test_CityJSON()
   const Mesh mesh = make_mesh(buildings, true, true);
 
   std::ostringstream os;
-  CHECK(PPS::IO::write_CityJSON(os, mesh));
+  assert(PPS::IO::write_CityJSON(os, mesh));
   const std::string text = os.str();
   check_CityJSON(text, buildings, 0.001);
   {
     const json j = json::parse(text);
     // the touching buildings share four points: written once
-    CHECK(j["vertices"].size() == 10 + 8 - 4);
+    assert(j["vertices"].size() == 10 + 8 - 4);
     // buildings by increasing index
-    CHECK(j["CityObjects"].begin().key() == "building_3");
+    assert(j["CityObjects"].begin().key() == "building_3");
   }
   std::cout << "CityJSON: " << text.size() << " bytes" << std::endl;
 
   // another precision
   std::ostringstream centimetres;
-  CHECK(PPS::IO::write_CityJSON(centimetres, mesh, CGAL::parameters::stream_precision(2)));
+  assert(PPS::IO::write_CityJSON(centimetres, mesh, CGAL::parameters::stream_precision(2)));
   check_CityJSON(centimetres.str(), buildings, 0.01);
 
   // the output does not depend on the locale, of the stream or the global one
@@ -630,21 +630,21 @@ void test_CityJSON()
     localized.imbue(comma);
     localized << 1234.5 << ' ';
     const std::string check_locale = localized.str();
-    CHECK(check_locale == "1.234,5 ");
-    CHECK(PPS::IO::write_CityJSON(localized, mesh));
+    assert(check_locale == "1.234,5 ");
+    assert(PPS::IO::write_CityJSON(localized, mesh));
     std::locale::global(previous);
-    CHECK(localized.str() == check_locale + text);
+    assert(localized.str() == check_locale + text);
   }
 
   // the file overload writes the same text
   const std::string file = "test_lod2_building_parts.city.json";
   std::filesystem::remove(file);
-  CHECK(PPS::IO::write_CityJSON(file, mesh));
+  assert(PPS::IO::write_CityJSON(file, mesh));
   {
     std::ifstream in(file, std::ios::binary);
     std::stringstream content;
     content << in.rdbuf();
-    CHECK(content.str() == text);
+    assert(content.str() == text);
   }
   std::filesystem::remove(file);
 
@@ -656,9 +656,9 @@ void test_CityJSON()
   for(const Mesh* bad : std::vector<const Mesh*>{&without_type, &without_building, &wrong_type}) {
     std::ostringstream nothing;
     check_throws([&] { PPS::IO::write_CityJSON(nothing, *bad); }, PPS::Input_error_code::MISSING_PROPERTY);
-    CHECK(nothing.str().empty());
+    assert(nothing.str().empty());
     check_throws([&] { PPS::IO::write_CityJSON(file, *bad); }, PPS::Input_error_code::MISSING_PROPERTY);
-    CHECK(!std::filesystem::exists(file));
+    assert(!std::filesystem::exists(file));
   }
   {
     std::ostringstream nothing;
@@ -669,7 +669,7 @@ void test_CityJSON()
     Mesh not_finite = mesh;
     not_finite.point(*not_finite.vertices().begin()) = Point(std::nan(""), 0, 0);
     check_throws([&] { PPS::IO::write_CityJSON(nothing, not_finite); }, PPS::Input_error_code::NON_FINITE_COORDINATE);
-    CHECK(nothing.str().empty());
+    assert(nothing.str().empty());
   }
 
   // a mesh without faces: a valid file without city objects
@@ -678,9 +678,9 @@ void test_CityJSON()
     empty.add_property_map<Face, std::size_t>("f:building", 0);
     empty.add_property_map<Face, Type>("f:surface_type", Type::ROOF);
     std::ostringstream out;
-    CHECK(PPS::IO::write_CityJSON(out, empty));
+    assert(PPS::IO::write_CityJSON(out, empty));
     const json j = json::parse(out.str());
-    CHECK(j["CityObjects"].empty() && j["vertices"].empty());
+    assert(j["CityObjects"].empty() && j["vertices"].empty());
   }
 
   // JSON strings are escaped
@@ -688,7 +688,7 @@ void test_CityJSON()
     const std::string tricky = "a\"b\\c\nd\te\x01 \xc3\xa9/";
     std::string out;
     PPS::internal::append_JSON_string(out, tricky);
-    CHECK(json::parse(out).get<std::string>() == tricky);
+    assert(json::parse(out).get<std::string>() == tricky);
   }
 }
 
@@ -747,22 +747,22 @@ void test_facade_evidence()
       const Scene scene = box(normal_outwards, lower_roof);
       const auto samples = PPS::internal::facade_evidence<K>(scene.points, scene.planes, step, 2);
       const auto& facade = scene.planes.planes.back().inliers;
-      CHECK(samples.in_front.size() == 2 * facade.size() && samples.behind.size() == 2 * facade.size());
+      assert(samples.in_front.size() == 2 * facade.size() && samples.behind.size() == 2 * facade.size());
       for(std::size_t i = 0; i < facade.size(); ++i)
         for(std::size_t k = 0; k < 2; ++k) {
           const auto& p = scene.points[facade[i]];
           const auto& front = samples.in_front[2 * i + k];
           const auto& back = samples.behind[2 * i + k];
-          CHECK(std::abs(front[0] - (10 + double(k + 1) * step)) < 1e-9); // outwards, from the plane
-          CHECK(std::abs(back[0] - (10 - double(k + 1) * step)) < 1e-9);
-          CHECK(front[1] == p.y() && front[2] == p.z() && back[1] == p.y() && back[2] == p.z());
+          assert(std::abs(front[0] - (10 + double(k + 1) * step)) < 1e-9); // outwards, from the plane
+          assert(std::abs(back[0] - (10 - double(k + 1) * step)) < 1e-9);
+          assert(front[1] == p.y() && front[2] == p.z() && back[1] == p.y() && back[2] == p.z());
         }
     }
   // a wall with a roof only far from it (beyond its height): neither side is the inside
   Scene lone_wall = box(true, false, false);
   lone_wall.add(K::Plane_3(0, 0, 1, -10), false, {-20, -15}, {0, 10}, {10, 10});
   const auto none = PPS::internal::facade_evidence<K>(lone_wall.points, lone_wall.planes, step, 2);
-  CHECK(none.in_front.empty() && none.behind.empty());
+  assert(none.in_front.empty() && none.behind.empty());
 }
 
 // A courtyard 6 m wide between a wing 6 m deep and a wider one, both 15 m high: the facade of
@@ -780,10 +780,10 @@ void test_facade_evidence_across_a_courtyard()
   const double step = 0.3;
   const auto samples = PPS::internal::facade_evidence<K>(scene.points, scene.planes, step, 1);
   const std::size_t n = scene.planes.planes[3].inliers.size();
-  CHECK(samples.in_front.size() == 2 * n && samples.behind.size() == 2 * n);
+  assert(samples.in_front.size() == 2 * n && samples.behind.size() == 2 * n);
   for(std::size_t i = 0; i < n; ++i) {
-    CHECK(std::abs(samples.in_front[i][0] - (10 + step)) < 1e-9 && std::abs(samples.behind[i][0] - (10 - step)) < 1e-9);
-    CHECK(std::abs(samples.in_front[n + i][0] - (16 - step)) < 1e-9 && std::abs(samples.behind[n + i][0] - (16 + step)) < 1e-9);
+    assert(std::abs(samples.in_front[i][0] - (10 + step)) < 1e-9 && std::abs(samples.behind[i][0] - (10 - step)) < 1e-9);
+    assert(std::abs(samples.in_front[n + i][0] - (16 - step)) < 1e-9 && std::abs(samples.behind[n + i][0] - (16 + step)) < 1e-9);
   }
 }
 

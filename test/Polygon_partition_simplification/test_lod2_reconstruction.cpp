@@ -13,6 +13,7 @@
 #include <CGAL/lod2_building_reconstruction.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -24,27 +25,18 @@ namespace PPS = CGAL::Polygon_partition_simplification;
 namespace T = PPS::test;
 using Mesh = T::Mesh;
 
-static int failures = 0;
-#define CHECK(condition, what)                                                                      \
-  do {                                                                                               \
-    if(!(condition)) {                                                                               \
-      std::cerr << "FAILED: " << what << " (" #condition ", line " << __LINE__ << ")" << std::endl; \
-      ++failures;                                                                                    \
-    }                                                                                                \
-  } while(false)
-
 static auto sample_maps()
 {
   return CGAL::parameters::point_map(T::Sample_point_map()).normal_map(T::Sample_normal_map());
 }
 
 // roofs face up, walls are vertical, floors face down at the ground height (z = 0 in the scenes)
-static void check_faces(const Mesh& model, double ground, const std::string& name)
+static void check_faces(const Mesh& model, double ground)
 {
   const auto type =
     PPS::internal::optional_property_map(model.property_map<Mesh::Face_index, PPS::Building_surface_type>("f:surface_type"));
   const auto plane = PPS::internal::optional_property_map(model.property_map<Mesh::Face_index, std::size_t>("f:plane"));
-  CHECK(type && plane, name << ": the face properties exist");
+  assert(type && plane);
   if(!type || !plane) return;
   std::size_t wrong = 0;
   for(auto f : model.faces()) {
@@ -61,7 +53,7 @@ static void check_faces(const Mesh& model, double ground, const std::string& nam
     }
     }
   }
-  CHECK(wrong == 0, name << ": " << wrong << " faces of the wrong orientation for their type");
+  assert(wrong == 0);
 }
 
 struct Expected
@@ -93,14 +85,14 @@ static T::Two_way_distances test_scene(T::Scene_kind kind, double wall_density, 
             << report.cells_before << " -> " << report.cells_after << ", " << report.buildings << " buildings, "
             << report.faces << " faces; truth to model RMS " << d.truth_to_model.rms << " max " << d.truth_to_model.max
             << ", model to truth RMS " << d.model_to_truth.rms << " max " << d.model_to_truth.max << std::endl;
-  CHECK(report.closed && report.bounds_volume, name << ": every building is closed and bounds a volume");
-  CHECK(CGAL::is_closed(model) && CGAL::is_valid_polygon_mesh(model), name << ": the mesh is closed and valid");
-  CHECK(report.repaired_buildings == 0, name << ": no building needed a repair");
-  CHECK(report.buildings == expected.buildings, name << ": " << report.buildings << " buildings");
-  CHECK(report.faces == model.number_of_faces(), name << ": the report counts the faces");
-  CHECK(d.truth_to_model.rms < expected.rms && d.model_to_truth.rms < expected.rms, name << ": RMS distances");
-  CHECK(d.truth_to_model.max < expected.maximum && d.model_to_truth.max < expected.maximum, name << ": largest distances");
-  check_faces(model, 0, name);
+  assert(report.closed && report.bounds_volume);
+  assert(CGAL::is_closed(model) && CGAL::is_valid_polygon_mesh(model));
+  assert(report.repaired_buildings == 0);
+  assert(report.buildings == expected.buildings);
+  assert(report.faces == model.number_of_faces());
+  assert(d.truth_to_model.rms < expected.rms && d.model_to_truth.rms < expected.rms);
+  assert(d.truth_to_model.max < expected.maximum && d.model_to_truth.max < expected.maximum);
+  check_faces(model, 0);
   return d;
 }
 
@@ -119,12 +111,12 @@ static void test_order_independence()
   CGAL::lod2_building_reconstruction(samples, first, sample_maps().plane_index_map(T::Sample_plane_index_map()));
   std::shuffle(samples.begin(), samples.end(), std::mt19937(7));
   CGAL::lod2_building_reconstruction(samples, second, sample_maps().plane_index_map(T::Sample_plane_index_map()));
-  CHECK(first.number_of_faces() == second.number_of_faces(), "order: the same number of faces");
+  assert(first.number_of_faces() == second.number_of_faces());
   const auto a = corners(first), b = corners(second);
   double largest = a.size() == b.size() ? 0 : std::numeric_limits<double>::infinity();
   for(std::size_t i = 0; i < a.size() && i < b.size(); ++i)
     for(int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(a[i][k] - b[i][k]));
-  CHECK(largest < 1e-6, "order: the corners of the models agree (largest difference " << largest << ")");
+  assert(largest < 1e-6);
 }
 
 // CGAL's building.ply (100k points, normals, planes in `segment_index`): one closed building
@@ -132,11 +124,11 @@ static void test_building_ply(const std::string& file)
 {
   CGAL::Point_set_3<T::Point_3, T::Vector_3> points;
   if(!CGAL::IO::read_point_set(file, points)) {
-    CHECK(false, "cannot read " << file);
+    assert(false);
     return;
   }
   const auto index = PPS::internal::optional_property_map(points.property_map<int>("segment_index"));
-  CHECK(index, "building.ply has segment_index");
+  assert(index);
   if(!index) return;
   Mesh model;
   const auto report = CGAL::lod2_building_reconstruction(
@@ -144,9 +136,9 @@ static void test_building_ply(const std::string& file)
   std::cout << "building.ply: " << report.planes << " planes, cells " << report.cells_before << " -> "
             << report.cells_after << ", " << report.buildings << " buildings, " << report.faces << " faces, RMS "
             << report.rms_distance << " over " << report.measured_points << " points" << std::endl;
-  CHECK(report.closed && report.bounds_volume && report.buildings == 1, "building.ply: one closed building");
-  CHECK(report.measured_points < points.size(), "building.ply: the ground plane is found");
-  CHECK(report.rms_distance < 1.5, "building.ply: RMS distance " << report.rms_distance);
+  assert(report.closed && report.bounds_volume && report.buildings == 1);
+  assert(report.measured_points < points.size());
+  assert(report.rms_distance < 1.5);
 }
 
 template <class Points, class NamedParameters>
@@ -161,12 +153,12 @@ static void expect_error(const std::string& name, const Points& points, PPS::Inp
     CGAL::lod2_building_reconstruction(points, model, np);
   } catch(const PPS::Input_error& e) {
     thrown = true;
-    CHECK(e.code() == code, name << ": error code (" << e.what() << ")");
-    CHECK(std::string(e.what()).find('\n') == std::string::npos, name << ": one-line message");
+    assert(e.code() == code);
+    assert(std::string(e.what()).find('\n') == std::string::npos);
     std::cout << name << ": " << e.what() << std::endl;
   }
-  CHECK(thrown, name << ": an Input_error is thrown");
-  CHECK(model.number_of_removed_vertices() == 1 && model.is_empty(), name << ": the mesh is unchanged");
+  assert(thrown);
+  assert(model.number_of_removed_vertices() == 1 && model.is_empty());
 }
 
 static void test_bad_input()
@@ -196,7 +188,7 @@ static void test_bad_input()
   } catch(const PPS::Input_error& e) {
     thrown = e.code() == PPS::Input_error_code::INVALID_PARAMETER;
   }
-  CHECK(thrown && not_empty.number_of_vertices() == 1, "a mesh that is not empty is refused and kept");
+  assert(thrown && not_empty.number_of_vertices() == 1);
 }
 
 int main(int argc, char** argv)
@@ -223,7 +215,7 @@ int main(int argc, char** argv)
     // without it, the walls stand at the edges of the eaves, 1 m out (the scene tells the two apart)
     const T::Two_way_distances at_eaves =
       test_scene(K::L_SHAPED_FLAT_ROOF, 1, detect, {1, 1, 2}, 1, false);
-    CHECK(at_eaves.model_to_truth.max > 0.8, "walls_at_facades(false): the walls are at the eaves");
+    assert(at_eaves.model_to_truth.max > 0.8);
   }
   test_scene(K::SEVERAL_BUILDINGS, 0.1, false, {5, 0.05, 0.3});
   test_scene(K::SEVERAL_BUILDINGS, 0, true, {5, 0.15, 0.6});
@@ -231,10 +223,6 @@ int main(int argc, char** argv)
   test_bad_input();
   const std::string data = argc > 1 ? argv[1] : "";
   if(!data.empty()) test_building_ply(data + "/points_3/building.ply");
-  if(failures > 0) {
-    std::cerr << failures << " check(s) failed" << std::endl;
-    return 1;
-  }
   std::cout << "all LOD2 reconstruction checks passed" << std::endl;
   return 0;
 }

@@ -24,6 +24,7 @@
 
 #include "synthetic_footprints.h"
 
+#include <cassert>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -32,7 +33,6 @@
 #include <type_traits>
 #include <vector>
 
-#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
@@ -172,31 +172,31 @@ void test_kinetic_partitions()
 {
   const synthetic::Footprints f = synthetic::make_footprints(6, 0.05, 11);
   const auto reference = CGAL::kinetic_partition_2(segments_in<Epick>(f.segments));
-  CHECK(reference.is_valid() && reference.number_of_cells() > 20);
+  assert(reference.is_valid() && reference.number_of_cells() > 20);
   // the default model, explicitly
   const auto explicit_default =
     CGAL::kinetic_partition_2(segments_in<Epick>(f.segments), CGAL::parameters::geom_traits(Default_traits()));
-  CHECK(same_partition(reference, explicit_default) && same_cells(reference, explicit_default));
+  assert(same_partition(reference, explicit_default) && same_cells(reference, explicit_default));
   // a kernel given as `geom_traits` stands for the default model of it
   const auto kernel_given = CGAL::kinetic_partition_2(segments_in<Epick>(f.segments), CGAL::parameters::geom_traits(Epick()));
-  CHECK(same_partition(reference, kernel_given));
+  assert(same_partition(reference, kernel_given));
   // another exact constructions kernel (not lazy): the same exact partition, the same doubles
   const auto rational =
     CGAL::kinetic_partition_2(segments_in<Epick>(f.segments), CGAL::parameters::geom_traits(Rational_traits()));
-  CHECK(same_partition(reference, rational) && same_cells(reference, rational));
-  CHECK(rational.exact_arrangement().number_of_faces() == reference.exact_arrangement().number_of_faces());
+  assert(same_partition(reference, rational) && same_cells(reference, rational));
+  assert(rational.exact_arrangement().number_of_faces() == reference.exact_arrangement().number_of_faces());
   // user-facing kernels with exact constructions, and with inexact predicates
   const auto epeck = CGAL::kinetic_partition_2(segments_in<Epeck>(f.segments));
   const auto cartesian = CGAL::kinetic_partition_2(segments_in<Cartesian_double>(f.segments));
-  CHECK(same_partition(reference, epeck) && same_cells(reference, epeck));
-  CHECK(same_partition(reference, cartesian) && same_cells(reference, cartesian));
+  assert(same_partition(reference, epeck) && same_cells(reference, epeck));
+  assert(same_partition(reference, cartesian) && same_cells(reference, cartesian));
   // with the other named parameters of the function
   const auto crossing = CGAL::kinetic_partition_2(segments_in<Epick>(f.segments),
                                                   PPS::parameters::maximum_number_of_crossings(std::size_t(1)));
   const auto crossing_rational = CGAL::kinetic_partition_2(
     segments_in<Epick>(f.segments),
     PPS::parameters::maximum_number_of_crossings(std::size_t(1), CGAL::parameters::geom_traits(Rational_traits())));
-  CHECK(!same_partition(reference, crossing) && same_partition(crossing, crossing_rational));
+  assert(!same_partition(reference, crossing) && same_partition(crossing, crossing_rational));
   std::cout << "kinetic partition: " << reference.number_of_cells()
             << " cells, the same with Epick, Epeck, Simple_cartesian<double>, and Simple_cartesian<Exact_rational> "
                "as exact kernel"
@@ -224,7 +224,7 @@ void test_kinetic_partitions()
     rounded.emplace_back(Epick::Point_2(nearest(s.source().x()), nearest(s.source().y())),
                          Epick::Point_2(nearest(s.target().x()), nearest(s.target().y())));
   const auto third_partition = CGAL::kinetic_partition_2(thirds);
-  CHECK(same_partition(third_partition, CGAL::kinetic_partition_2(rounded)));
+  assert(same_partition(third_partition, CGAL::kinetic_partition_2(rounded)));
 }
 
 void test_builders_and_simplification()
@@ -232,12 +232,12 @@ void test_builders_and_simplification()
   const synthetic::Footprints f = synthetic::make_footprints(8, 0.05, 5);
   // polygons: Epick by default, the same with an explicit model, Epeck, Simple_cartesian<double>
   auto reference = PPS::line_partition_from_polygons_2(polygons_in<Epick>(f.polygons));
-  CHECK(reference.is_valid());
+  assert(reference.is_valid());
   auto rational =
     PPS::line_partition_from_polygons_2(polygons_in<Epick>(f.polygons), CGAL::parameters::geom_traits(Rational_traits()));
   auto epeck = PPS::line_partition_from_polygons_2(polygons_in<Epeck>(f.polygons));
   auto cartesian = PPS::line_partition_from_polygons_2(polygons_in<Cartesian_double>(f.polygons));
-  CHECK(same_partition(reference, rational) && same_partition(reference, epeck) && same_partition(reference, cartesian));
+  assert(same_partition(reference, rational) && same_partition(reference, epeck) && same_partition(reference, cartesian));
   // an arrangement in Epeck, the result with the traits given
   CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<Epeck>> arrangement;
   const auto exact_segments = segments_in<Epeck>({{0, 0, 2, 0}, {2, 0, 2, 1}, {2, 1, 0, 1}, {0, 1, 0, 0}, {1, 0, 1, 1}});
@@ -245,7 +245,7 @@ void test_builders_and_simplification()
   const auto from_arrangement = PPS::line_partition_from_arrangement_2<Epick>(arrangement);
   const auto from_arrangement_rational = PPS::line_partition_from_arrangement_2<Rational_traits>(
     arrangement, CGAL::parameters::geom_traits(Rational_traits()));
-  CHECK(from_arrangement.number_of_cells() == 2 && same_partition(from_arrangement, from_arrangement_rational));
+  assert(from_arrangement.number_of_cells() == 2 && same_partition(from_arrangement, from_arrangement_rational));
 
   // the simplification: the same rounds, the same result, whatever the kernels
   auto kinetic = CGAL::kinetic_partition_2(segments_in<Epick>(f.segments));
@@ -254,12 +254,12 @@ void test_builders_and_simplification()
   auto kinetic_epeck = CGAL::kinetic_partition_2(segments_in<Epeck>(f.segments));
   auto kinetic_cartesian = CGAL::kinetic_partition_2(segments_in<Cartesian_double>(f.segments));
   const auto s = CGAL::simplify_polygon_partition_2(kinetic);
-  CHECK(s.line_merges > 0 && kinetic.is_valid());
-  CHECK(same_statistics(s, CGAL::simplify_polygon_partition_2(kinetic_rational)) && same_partition(kinetic, kinetic_rational));
-  CHECK(same_statistics(s, CGAL::simplify_polygon_partition_2(kinetic_epeck)) && same_partition(kinetic, kinetic_epeck));
-  CHECK(same_statistics(s, CGAL::simplify_polygon_partition_2(kinetic_cartesian)) &&
+  assert(s.line_merges > 0 && kinetic.is_valid());
+  assert(same_statistics(s, CGAL::simplify_polygon_partition_2(kinetic_rational)) && same_partition(kinetic, kinetic_rational));
+  assert(same_statistics(s, CGAL::simplify_polygon_partition_2(kinetic_epeck)) && same_partition(kinetic, kinetic_epeck));
+  assert(same_statistics(s, CGAL::simplify_polygon_partition_2(kinetic_cartesian)) &&
         same_partition(kinetic, kinetic_cartesian));
-  CHECK(same_cells(kinetic, kinetic_epeck) && same_cells(kinetic, kinetic_cartesian));
+  assert(same_cells(kinetic, kinetic_epeck) && same_cells(kinetic, kinetic_cartesian));
   std::cout << "builders and simplification: " << s.cells_before << " -> " << s.cells_after
             << " cells, the same with every kernel" << std::endl;
 }
@@ -271,28 +271,28 @@ void test_traits_object_is_used()
   Counting_traits traits;
   auto p = CGAL::kinetic_partition_2(segments, CGAL::parameters::geom_traits(traits));
   static_assert(std::is_same<decltype(p)::Geom_traits, Counting_traits>::value, "");
-  CHECK(traits.counts->sources >= segments.size()); // the input is read with the traits
-  CHECK(same_partition(p, CGAL::kinetic_partition_2(segments)));
-  CHECK(p.geom_traits().counts == traits.counts); // the partition keeps the traits object
+  assert(traits.counts->sources >= segments.size()); // the input is read with the traits
+  assert(same_partition(p, CGAL::kinetic_partition_2(segments)));
+  assert(p.geom_traits().counts == traits.counts); // the partition keeps the traits object
   const std::size_t points = traits.counts->points;
   p.point(0);
-  CHECK(traits.counts->points == points + 1);
+  assert(traits.counts->points == points + 1);
   p.segment(0);
-  CHECK(traits.counts->segments == 1);
+  assert(traits.counts->segments == 1);
   std::vector<Counting_traits::Polygon_with_holes_2> cells;
   p.cells(std::back_inserter(cells));
-  CHECK(traits.counts->points > points + 1 + cells.size());
+  assert(traits.counts->points > points + 1 + cells.size());
   CGAL::simplify_polygon_partition_2(p);
-  CHECK(p.geom_traits().counts == traits.counts); // through the simplification
+  assert(p.geom_traits().counts == traits.counts); // through the simplification
   const std::size_t before = traits.counts->points;
   p.point(0);
-  CHECK(traits.counts->points == before + 1);
+  assert(traits.counts->points == before + 1);
   // the polygons, too
   Counting_traits other;
   const auto q = PPS::line_partition_from_polygons_2(polygons_in<Epick>(f.polygons), CGAL::parameters::geom_traits(other));
-  CHECK(q.geom_traits().counts == other.counts && other.counts->points == 0);
+  assert(q.geom_traits().counts == other.counts && other.counts->points == 0);
   q.point(0);
-  CHECK(other.counts->points == 1);
+  assert(other.counts->points == 1);
   std::cout << "traits object: " << traits.counts->sources << " sources read, " << traits.counts->points
             << " points made with it" << std::endl;
 }

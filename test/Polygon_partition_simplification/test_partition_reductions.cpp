@@ -14,6 +14,7 @@
 #include "synthetic_footprints.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -29,7 +30,6 @@ using Partition = PPS::Line_partition_2<K>;
 using GT = Partition::Geom_traits;
 using Stats = PPS::Simplification_statistics;
 
-#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
 
 // A partition made of axis-parallel rectangles (x0, y0, x1, y1), in working form, with the
 // thresholds of the default parameters; lines are found by two of their input points.
@@ -77,7 +77,7 @@ struct Scene
     const I::Vector_3d wanted = line_through(x0, y0, x1, y1);
     for(std::size_t l = 0; l < start.lines.size(); ++l)
       if(I::line_distance(start.lines[l].coefficients, wanted) < 1e-9) return l;
-    CHECK(!"no such line");
+    assert(!"no such line");
     return 0;
   }
 
@@ -97,12 +97,12 @@ struct Scene
     const I::Round_start_edges start_edges(start);
     I::Partition_reducer reducer(w, thresholds);
     const I::Reduction_counts counts = reducer.run(start_edges.orientations, I::moved_lines(w, start));
-    CHECK(reducer.conflicts().empty());
+    assert(reducer.conflicts().empty());
     // told which lines moved, the reducer makes the edges again only around them and the
     // merges: the same partition as when it makes them again everywhere
     I::Partition_reducer everywhere_reducer(everywhere, thresholds);
     everywhere_reducer.run(start_edges.orientations);
-    CHECK(w.edges == everywhere.edges && w.vertex_lines == everywhere.vertex_lines);
+    assert(w.edges == everywhere.edges && w.vertex_lines == everywhere.vertex_lines);
     return counts;
   }
 };
@@ -153,24 +153,24 @@ void test_line_merge()
   const I::Reduction_counts counts = s.reduce(w, {{x6, s.line_through(5 + 1e-9, 0, 5 + 1e-9, 10)}});
   std::cout << "line merge: lines " << s.start.lines.size() << " -> " << w.lines.size() << ", cells "
             << I::number_of_cells(s.start) << " -> " << I::number_of_cells(w) << std::endl;
-  CHECK(counts.line_merges == 1 && counts.far_removals == 0);
-  CHECK(w.lines.size() == s.start.lines.size() - 1);
-  CHECK(I::number_of_cells(s.start) == 3 && I::number_of_cells(w) == 2);
-  CHECK(defect(w).empty() && !has_faulty_pair(w));
+  assert(counts.line_merges == 1 && counts.far_removals == 0);
+  assert(w.lines.size() == s.start.lines.size() - 1);
+  assert(I::number_of_cells(s.start) == 3 && I::number_of_cells(w) == 2);
+  assert(defect(w).empty() && !has_faulty_pair(w));
   // the merged line: the one whose members are x5 and x6
   std::size_t merged = w.lines.size();
   for(std::size_t l = 0; l < w.lines.size(); ++l)
     if(w.lines[l].members.size() == 2) merged = l;
-  CHECK(merged < w.lines.size());
+  assert(merged < w.lines.size());
   const auto& m = w.lines[merged].metric;
-  for(int i = 0; i < 6; ++i) CHECK(m.entries[i] == summed.entries[i]);
-  CHECK(I::line_distance(w.lines[merged].coefficients, s.line_through(5.5, 0, 5.5, 10)) < 1e-12);
+  for(int i = 0; i < 6; ++i) assert(m.entries[i] == summed.entries[i]);
+  assert(I::line_distance(w.lines[merged].coefficients, s.line_through(5.5, 0, 5.5, 10)) < 1e-12);
   // no line of the cylinder fits M_f better (brute force over directions, c at its optimum)
   const double best = fidelity_of(w.lines[merged].coefficients, m);
   for(int k = 0; k < 3600; ++k) {
     const double t = 3.14159265358979323846 * k / 3600, a = std::cos(t), b = std::sin(t);
     const double c = -(m(0, 2) * a + m(1, 2) * b) / m(2, 2);
-    CHECK(best <= fidelity_of({a, b, c}, m) + 1e-15);
+    assert(best <= fidelity_of({a, b, c}, m) + 1e-15);
   }
 }
 
@@ -184,13 +184,13 @@ void test_point_merge()
   I::Working_partition w;
   const I::Reduction_counts counts = s.reduce(w, {{x6, s.line_through(5 + 1e-9, 0, 7, 10)}});
   std::cout << "point merge: points " << s.start.vertex_lines.size() << " -> " << w.vertex_lines.size() << std::endl;
-  CHECK(counts.point_merges == 1 && counts.line_merges == 0 && counts.far_removals == 0);
-  CHECK(w.lines.size() == s.start.lines.size());
-  CHECK(w.vertex_lines.size() == s.start.vertex_lines.size() - 1);
-  CHECK(w.edges.size() == s.start.edges.size() - 1);
-  CHECK(std::count_if(w.vertex_lines.begin(), w.vertex_lines.end(), [](const auto& l) { return l.size() == 3; }) == 1);
-  CHECK(I::number_of_cells(w) == 3);
-  CHECK(defect(w).empty() && !has_faulty_pair(w));
+  assert(counts.point_merges == 1 && counts.line_merges == 0 && counts.far_removals == 0);
+  assert(w.lines.size() == s.start.lines.size());
+  assert(w.vertex_lines.size() == s.start.vertex_lines.size() - 1);
+  assert(w.edges.size() == s.start.edges.size() - 1);
+  assert(std::count_if(w.vertex_lines.begin(), w.vertex_lines.end(), [](const auto& l) { return l.size() == 3; }) == 1);
+  assert(I::number_of_cells(w) == 3);
+  assert(defect(w).empty() && !has_faulty_pair(w));
 }
 
 // (b2): a wall x = 5 standing on a floor y = 5 that crosses the box, turned about its foot
@@ -206,8 +206,8 @@ void test_far_point_removal()
     I::Working_partition w;
     const I::Reduction_counts counts =
       kept.reduce(w, {{kept.line(5, 0, 5, 5), kept.line_through(5, 0, 5 + 1000, 1)}});
-    CHECK(counts.far_removals == 0 && counts.far_points >= 1);
-    CHECK(w.lines.size() == 6 && I::number_of_cells(w) == 3 && !defect(w).empty());
+    assert(counts.far_removals == 0 && counts.far_points >= 1);
+    assert(w.lines.size() == 6 && I::number_of_cells(w) == 3 && !defect(w).empty());
   }
   const Scene s(rectangles, true);
   const std::size_t wall = s.line(5, 0, 5, 5);
@@ -215,13 +215,13 @@ void test_far_point_removal()
   const I::Reduction_counts counts = s.reduce(w, {{wall, s.line_through(5, 0, 5 + 1000, 1)}});
   std::cout << "far point removal: lines " << s.start.lines.size() << " -> " << w.lines.size() << ", cells "
             << I::number_of_cells(s.start) << " -> " << I::number_of_cells(w) << std::endl;
-  CHECK(counts.far_removals == 1 && counts.far_points == 0 && counts.line_merges == 0);
-  CHECK(I::number_of_cells(s.start) == 3 && I::number_of_cells(w) == 1);
-  CHECK(w.lines.size() == 4 && w.vertex_lines.size() == 4);
-  CHECK(defect(w).empty());
+  assert(counts.far_removals == 1 && counts.far_points == 0 && counts.line_merges == 0);
+  assert(I::number_of_cells(s.start) == 3 && I::number_of_cells(w) == 1);
+  assert(w.lines.size() == 4 && w.vertex_lines.size() == 4);
+  assert(defect(w).empty());
   for(I::Index v = 0; v < w.vertex_lines.size(); ++v) {
     const auto p = w.point(v);
-    CHECK(p[0] * p[0] + p[1] * p[1] <= 1.);
+    assert(p[0] * p[0] + p[1] * p[1] <= 1.);
   }
 }
 
@@ -235,9 +235,9 @@ void test_far_corner_stays()
   const std::size_t right = s.line(10, 0, 10, 10);
   I::Working_partition w;
   const I::Reduction_counts counts = s.reduce(w, {{right, s.line_through(10, 0, 10 + 1000, -1)}});
-  CHECK(counts.far_removals == 0 && counts.far_points >= 1);
-  CHECK(w.lines.size() == 4 && w.vertex_lines.size() == 4 && I::number_of_cells(w) == 1);
-  CHECK(!defect(w).empty());
+  assert(counts.far_removals == 0 && counts.far_points >= 1);
+  assert(w.lines.size() == 4 && w.vertex_lines.size() == 4 && I::number_of_cells(w) == 1);
+  assert(!defect(w).empty());
 }
 
 // An edge that the descent reversed and that no reduction removes: the wall between two squares
@@ -250,12 +250,12 @@ void test_reversed_edge_kept()
   const Scene s({{0, 0, 10, 10}, {10, 0, 20, 10}});
   I::Working_partition w;
   const I::Reduction_counts counts = s.reduce(w, {{s.line(10, 0, 10, 10), s.line_through(10, 0, 25, 10)}});
-  CHECK(counts.far_points >= 1 && counts.total() == 0);
+  assert(counts.far_points >= 1 && counts.total() == 0);
   const std::size_t top = s.line(0, 10, 20, 10);
   std::size_t top_edges = 0;
   for(const auto& e : w.edges) top_edges += e[0] == top;
-  CHECK(top_edges == 2);
-  CHECK(!defect(w).empty());
+  assert(top_edges == 2);
+  assert(!defect(w).empty());
 }
 
 // Eq. 3.15: with eta = d_P d_L^2 / (5 (1 + R^2)), R = 1, every triplet of lines (i, j, k) with
@@ -327,11 +327,11 @@ void test_eta_bound()
     if(d2 < dp2) { ++cases[1]; continue; }
     std::cerr << "triplet below eta in none of the three situations: |P_ij - P_ik| = " << std::sqrt(CGAL::to_double(d2))
               << std::endl;
-    CHECK(false);
+    assert(false);
   }
   std::cout << "eta bound: " << below << " triplets below eta: " << cases[0] << " (a), " << cases[1] << " (b1), "
             << cases[2] << " (b2)" << std::endl;
-  CHECK(cases[0] > 100 && cases[1] > 100 && cases[2] > 100);
+  assert(cases[0] > 100 && cases[1] > 100 && cases[2] > 100);
 }
 
 // Whole simplifications of synthetic footprints: every descent (from the partition after each
@@ -351,14 +351,14 @@ void test_rounds()
         I::simplification_settings(PPS::parameters::remove_far_points(remove_far_points), p.frame().scale);
       std::size_t rounds = 0, descents_lowering = 0, partial_reductions = 0;
       auto check_round = [&](const Partition& q, const Stats&) {
-        CHECK(q.is_valid());
+        assert(q.is_valid());
         std::vector<std::vector<std::size_t>> lines;
         for(const auto& v : q.vertices()) lines.push_back(v.lines);
-        CHECK(!has_faulty_pair(lines));
+        assert(!has_faulty_pair(lines));
         I::Working_partition w = I::working_partition(q);
         for(I::Index v = 0; v < w.vertex_lines.size(); ++v) {
           const auto x = w.point(v);
-          CHECK(x[0] * x[0] + x[1] * x[1] <= 1. + 1e-12);
+          assert(x[0] * x[0] + x[1] * x[1] <= 1. + 1e-12);
         }
         // The reductions after a descent that moves some lines only: the edges made again around
         // what moved and merged (the reducer told which lines moved) are those made again
@@ -377,11 +377,11 @@ void test_rounds()
           I::Partition_reducer local_reducer(local, settings.thresholds), everywhere_reducer(everywhere, settings.thresholds);
           const std::size_t reductions = local_reducer.run(start_edges.orientations, moved_lines).total();
           everywhere_reducer.run(start_edges.orientations);
-          CHECK(local.edges == everywhere.edges);
-          CHECK(local.vertex_lines == everywhere.vertex_lines);
-          CHECK(local.lines.size() == everywhere.lines.size());
+          assert(local.edges == everywhere.edges);
+          assert(local.vertex_lines == everywhere.vertex_lines);
+          assert(local.lines.size() == everywhere.lines.size());
           for(std::size_t l = 0; l < std::min(local.lines.size(), everywhere.lines.size()); ++l)
-            CHECK(local.lines[l].coefficients == everywhere.lines[l].coefficients);
+            assert(local.lines[l].coefficients == everywhere.lines[l].coefficients);
           if(reductions > 0 && std::count(moved_lines.begin(), moved_lines.end(), false) > 0) ++partial_reductions;
         }
         const double before = I::energy_in_collapse_units(w, settings);
@@ -389,7 +389,7 @@ void test_rounds()
         const std::vector<I::Vector_3d> moved = I::descend(w, {}, settings, steps);
         for(std::size_t l = 0; l < w.lines.size(); ++l) w.lines[l].coefficients = moved[l];
         const double after = I::energy_in_collapse_units(w, settings);
-        CHECK(after <= before * (1 + 1e-12));
+        assert(after <= before * (1 + 1e-12));
         descents_lowering += after < before;
         ++rounds;
         return true;
@@ -397,13 +397,13 @@ void test_rounds()
       const Stats s = CGAL::simplify_polygon_partition_2(
         p, PPS::parameters::remove_far_points(remove_far_points).callback(
              std::function<bool(const Partition&, const Stats&)>(check_round)));
-      CHECK(remove_far_points || s.far_point_removals == 0);
+      assert(remove_far_points || s.far_point_removals == 0);
       std::cout << "footprints (seed " << seed << (remove_far_points ? ", far points removed" : "") << "): "
                 << s.rounds << " rounds, " << s.line_merges << " line merges, " << s.point_merges << " point merges, "
                 << s.far_point_removals << " far points removed, " << s.rejected_rounds << " redone; cells " << s.cells_before << " -> " << s.cells_after << std::endl;
-      CHECK(rounds == s.rounds && descents_lowering > 0);
+      assert(rounds == s.rounds && descents_lowering > 0);
       std::cout << "  reductions after a partial descent, edges made again locally: " << partial_reductions << " rounds" << std::endl;
-      CHECK(partial_reductions > 0);
+      assert(partial_reductions > 0);
     }
 }
 

@@ -11,6 +11,7 @@
 #include "synthetic_footprints.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -23,7 +24,6 @@ namespace PPS = CGAL::Polygon_partition_simplification;
 using Partition = PPS::Line_partition_2<K>;
 using Stats = PPS::Simplification_statistics;
 
-#define CHECK(c) do { if(!(c)) { std::cerr << "FAILED line " << __LINE__ << ": " #c << std::endl; std::exit(1); } } while(0)
 
 std::vector<K::Segment_2> to_segments(const std::vector<synthetic::Segment>& s)
 {
@@ -62,7 +62,7 @@ void test_gradient()
   for(const auto& v : p.vertices()) w.vertex_lines.emplace_back(v.lines.begin(), v.lines.end());
   for(const auto& e : p.edges()) w.edges.push_back({I::Index(e.line), I::Index(e.source), I::Index(e.target)});
   const I::Energy_terms terms = I::energy_terms(w);
-  CHECK(!terms.triplets.empty() && !terms.pairs.empty());
+  assert(!terms.triplets.empty() && !terms.pairs.empty());
   I::Energy_weights weights;
   weights.concurrency_weight = 0.3;
   weights.orthogonality_weight = 0.2;
@@ -77,7 +77,7 @@ void test_gradient()
   for(const auto& t : terms.triplets)
     active += std::abs(I::determinant(w.lines[t[0]].coefficients, w.lines[t[1]].coefficients,
                                       w.lines[t[2]].coefficients)) < weights.collapse_distance;
-  CHECK(active > 0); // the concurrency term is tested, not only its constant part
+  assert(active > 0); // the concurrency term is tested, not only its constant part
   for(std::size_t i = 0; i < w.lines.size(); ++i)
     for(int c = 0; c < 3; ++c) {
       auto plus = w.lines, minus = w.lines;
@@ -86,26 +86,26 @@ void test_gradient()
       const double fd = (I::energy(plus, terms, weights) - I::energy(minus, terms, weights)) / (2 * h);
       worst = std::max(worst, std::abs(fd - d[i][c]) / std::max(1., std::abs(d[i][c])));
     }
-  CHECK(worst < 1e-5);
+  assert(worst < 1e-5);
   // the per-line derivative of the descent is the same
   const I::Line_descent descent(w.lines, terms, weights);
-  CHECK(descent.number_of_moving_lines() == w.lines.size());
+  assert(descent.number_of_moving_lines() == w.lines.size());
   for(std::size_t m = 0; m < descent.number_of_moving_lines(); ++m) {
     const std::size_t i = descent.moving_line(m);
     const I::Vector_3d di = descent.derivative(m);
-    for(int c = 0; c < 3; ++c) CHECK(std::abs(di[c] - d[i][c]) < 1e-12 * (1 + std::abs(d[i][c])));
+    for(int c = 0; c < 3; ++c) assert(std::abs(di[c] - d[i][c]) < 1e-12 * (1 + std::abs(d[i][c])));
     const I::Vector_3d gi = descent.gradient(m), g = I::riemannian_gradient(w.lines[i], weights, d[i]);
-    for(int c = 0; c < 3; ++c) CHECK(std::abs(gi[c] - g[c]) < 1e-9 * (1 + std::abs(g[c])));
+    for(int c = 0; c < 3; ++c) assert(std::abs(gi[c] - g[c]) < 1e-9 * (1 + std::abs(g[c])));
   }
   for(std::size_t i = 0; i < w.lines.size(); ++i) {
     const auto& L = w.lines[i].coefficients;
     const I::Vector_3d g = I::riemannian_gradient(w.lines[i], weights, d[i]);
-    CHECK(std::abs(g[0] * L[0] + g[1] * L[1]) < 1e-9 * (1 + std::abs(g[0]) + std::abs(g[1]))); // tangent
+    assert(std::abs(g[0] * L[0] + g[1] * L[1]) < 1e-9 * (1 + std::abs(g[0]) + std::abs(g[1]))); // tangent
     for(const I::Vector_3d v : {I::Vector_3d{-L[1], L[0], 0}, I::Vector_3d{0, 0, 1}}) {
       double metric = 0;
       for(int r = 0; r < 3; ++r)
         for(int c = 0; c < 3; ++c) metric += g[r] * I::metric_entry(w.lines[i], weights, r, c) * v[c];
-      CHECK(std::abs(metric - I::dot(d[i], v)) < 1e-8 * (1 + std::abs(metric)));
+      assert(std::abs(metric - I::dot(d[i], v)) < 1e-8 * (1 + std::abs(metric)));
     }
   }
 }
@@ -146,26 +146,26 @@ void test_footprints()
     const Stats s = CGAL::simplify_polygon_partition_2(
       p, PPS::parameters::callback(std::function<bool(const Partition&, const Stats&)>(
            [&](const Partition& q, const Stats& so_far) {
-             CHECK(q.is_valid());
+             assert(q.is_valid());
              // the statistics so far describe the partition passed
-             CHECK(so_far.lines_after == q.number_of_lines() && so_far.points_after == q.number_of_vertices() &&
+             assert(so_far.lines_after == q.number_of_lines() && so_far.points_after == q.number_of_vertices() &&
                    so_far.cells_after == q.number_of_cells() && so_far.seconds > 0);
              ++rounds_seen;
              return true;
            })));
     std::cout << "footprints (seed " << seed << "): " << s << std::endl;
-    CHECK(p.is_valid());
-    CHECK(rounds_seen == s.rounds);
-    CHECK(s.lines_after < s.lines_before && s.cells_after < s.cells_before && s.points_after < s.points_before);
-    CHECK(s.orthogonal_pairs_after > s.orthogonal_pairs_before);
-    CHECK(s.line_merges > 0 && s.point_merges > 0);
+    assert(p.is_valid());
+    assert(rounds_seen == s.rounds);
+    assert(s.lines_after < s.lines_before && s.cells_after < s.cells_before && s.points_after < s.points_before);
+    assert(s.orthogonal_pairs_after > s.orthogonal_pairs_before);
+    assert(s.line_merges > 0 && s.point_merges > 0);
     // the walls stay where they were: 95% of the true boundary within 0.5 m of an edge
     // (noise 5 cm, buildings of 20 m; a short wall may be merged away)
     const std::vector<double> after = footprint_distances(f, p);
     const std::size_t q95 = after.size() * 95 / 100;
     std::cout << "  distance from the true footprints, 95% / max: " << before[q95] << " / " << before.back()
               << " -> " << after[q95] << " / " << after.back() << std::endl;
-    CHECK(after[q95] < 0.5);
+    assert(after[q95] < 0.5);
   }
 }
 
@@ -177,10 +177,10 @@ void test_parameters()
   Partition a = CGAL::kinetic_partition_2(segments), b = a, c = a, d = a;
   const Stats low = simplify(a, 0.02, 5), high = simplify(b, 0.5, 5);
   std::cout << "lambda1 0.02: " << low << "\nlambda1 0.5:  " << high << std::endl;
-  CHECK(high.lines_after < low.lines_after);
+  assert(high.lines_after < low.lines_after);
   const Stats none = simplify(c, 0.5, 0), strong = simplify(d, 0.5, 50);
   std::cout << "lambda2 0:  " << none << "\nlambda2 50: " << strong << std::endl;
-  CHECK(strong.orthogonal_pairs_after > none.orthogonal_pairs_after);
+  assert(strong.orthogonal_pairs_after > none.orthogonal_pairs_after);
 }
 
 // Exact similarities (rotation by 90 degrees, translation, scaling by 4, lengths scaled too)
@@ -194,7 +194,7 @@ void test_invariance()
   for(const auto& s : segments) moved.emplace_back(move(s.source()), move(s.target()));
   Partition p = CGAL::kinetic_partition_2(segments), q = CGAL::kinetic_partition_2(moved);
   const Stats a = simplify(p, 0.5, 5), b = simplify(q, 0.5, 5);
-  CHECK(a.lines_after == b.lines_after && a.points_after == b.points_after && a.cells_after == b.cells_after &&
+  assert(a.lines_after == b.lines_after && a.points_after == b.points_after && a.cells_after == b.cells_after &&
         a.orthogonal_pairs_after == b.orthogonal_pairs_after);
   // the same points (numbered differently: lines are numbered by their equations)
   std::vector<K::Point_2> x, y;
@@ -202,7 +202,7 @@ void test_invariance()
   for(const K::Point_2& a : x) {
     double best = 1e300;
     for(const K::Point_2& b : y) best = std::min(best, std::abs(a.x() - b.x()) + std::abs(a.y() - b.y()));
-    CHECK(best < 0.05); // 1.25 cm before scaling: rounding differs in the two frames
+    assert(best < 0.05); // 1.25 cm before scaling: rounding differs in the two frames
   }
 }
 
@@ -225,8 +225,8 @@ void test_extent()
     square.push_back(K::Point_2(x, y));
   far.emplace_back(square);
   const Partition alone = PPS::line_partition_from_polygons_2(cells), with_far = PPS::line_partition_from_polygons_2(far);
-  CHECK(with_far.frame().scale > 50 * alone.frame().scale);
-  CHECK(alone.number_of_lines() == CGAL::kinetic_partition_2(to_segments(f.segments)).number_of_lines());
+  assert(with_far.frame().scale > 50 * alone.frame().scale);
+  assert(alone.number_of_lines() == CGAL::kinetic_partition_2(to_segments(f.segments)).number_of_lines());
   bool valid = true;
   auto run = [&valid](Partition p, double epsilon) {
     const Stats s = epsilon > 0 ? CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(epsilon))
@@ -236,14 +236,14 @@ void test_extent()
   };
   const double epsilon = 0.01 * alone.frame().scale; // the default of the small scene
   const Stats a = run(alone, epsilon), b = run(with_far, epsilon), c = run(with_far, 0);
-  CHECK(valid);
+  assert(valid);
   std::cout << "extent: alone " << a << "\n  12 km away, same epsilon: " << b << "\n  12 km away, default epsilon: " << c
             << std::endl;
   // the square keeps its 4 lines and its cell
   const auto near = [](std::size_t x, std::size_t y, std::size_t slack) { return x + slack >= y && y + slack >= x; };
-  CHECK(near(b.cells_after, a.cells_after + 1, 2));
-  CHECK(near(b.lines_after, a.lines_after + 4, a.lines_after / 6)); // 80 against 77 + 4 here
-  CHECK(b.lines_after < b.lines_before * 3 / 4 && c.lines_after < c.lines_before);
+  assert(near(b.cells_after, a.cells_after + 1, 2));
+  assert(near(b.lines_after, a.lines_after + 4, a.lines_after / 6)); // 80 against 77 + 4 here
+  assert(b.lines_after < b.lines_before * 3 / 4 && c.lines_after < c.lines_before);
 }
 
 // total area of the cells
@@ -270,8 +270,8 @@ void test_box_stays_fixed()
       Partition p = CGAL::kinetic_partition_2(to_segments(f.segments));
       const double box_area = area_of_cells(p);
       CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(epsilon));
-      CHECK(p.is_valid());
-      CHECK(std::abs(area_of_cells(p) - box_area) <= 1e-9 * box_area);
+      assert(p.is_valid());
+      assert(std::abs(area_of_cells(p) - box_area) <= 1e-9 * box_area);
     }
 }
 
@@ -293,13 +293,13 @@ void test_stress()
       p, PPS::parameters::concurrency_weight(2 * u(rng), PPS::parameters::orthogonality_weight(50 * u(rng),
          PPS::parameters::collapse_distance(1 + 6 * u(rng), PPS::parameters::initial_step(run % 4 == 0 ? 1. : 0.02 * u(rng) + 1e-6,
          PPS::parameters::maximum_angle(20 * u(rng)))))));
-    CHECK(p.is_valid() && st.cells_after > 0);
+    assert(p.is_valid() && st.cells_after > 0);
     // the cells still tile the box (run 2 once sent a point on a side past a corner, through
     // infinity: its edge reversed, no edges crossed, and the area grew from 10,653 to 10,685)
-    CHECK(std::abs(area_of_cells(p) - box_area) <= 1e-9 * box_area);
-    CHECK(st.lines_after <= st.lines_before);
-    CHECK(st.cells_after == p.number_of_cells()); // Euler's formula against CGAL's arrangement
-    CHECK(st.cells_before == CGAL::kinetic_partition_2(s).number_of_cells());
+    assert(std::abs(area_of_cells(p) - box_area) <= 1e-9 * box_area);
+    assert(st.lines_after <= st.lines_before);
+    assert(st.cells_after == p.number_of_cells()); // Euler's formula against CGAL's arrangement
+    assert(st.cells_before == CGAL::kinetic_partition_2(s).number_of_cells());
   }
 }
 
@@ -327,11 +327,11 @@ void test_360_gon()
     };
     const Stats a = run(p), b = run(q);
     std::cout << "360-gon, lambda1 = " << lambda1 << ": " << a << std::endl;
-    CHECK(p.is_valid());
-    CHECK(a.lines_after < a.lines_before / 4); // adjacent edges at 1 degree merge...
-    CHECK(a.lines_after > 4 + 3 && a.cells_after == 2); // ...into a polygon that stays
-    CHECK(a.lines_after == b.lines_after && a.cells_after == b.cells_after);
-    for(std::size_t v = 0; v < p.number_of_vertices(); ++v) CHECK(p.point(v) == q.point(v));
+    assert(p.is_valid());
+    assert(a.lines_after < a.lines_before / 4); // adjacent edges at 1 degree merge...
+    assert(a.lines_after > 4 + 3 && a.cells_after == 2); // ...into a polygon that stays
+    assert(a.lines_after == b.lines_after && a.cells_after == b.cells_after);
+    for(std::size_t v = 0; v < p.number_of_vertices(); ++v) assert(p.point(v) == q.point(v));
   }
 }
 
@@ -359,20 +359,20 @@ void test_noisy_rings()
            PPS::parameters::collapse_distance(10., PPS::parameters::initial_step(0.01,
            PPS::parameters::minimum_length(1.))))));
       std::cout << "noisy " << n << "-gon, lambda1 = " << lambda1 << ": " << a << std::endl;
-      CHECK(p.is_valid());
-      CHECK(a.cells_before == 2 && a.cells_after == 2);
-      CHECK(a.lines_after < a.lines_before / 2);
+      assert(p.is_valid());
+      assert(a.cells_before == 2 && a.cells_after == 2);
+      assert(a.lines_after < a.lines_before / 2);
       ++runs;
     }
   }
-  CHECK(runs == 12);
+  assert(runs == 12);
 }
 
 template <class F>
 void expect_error(PPS::Input_error_code code, F f)
 {
-  try { f(); } catch(const PPS::Input_error& e) { CHECK(e.code() == code); return; }
-  CHECK(!"no error");
+  try { f(); } catch(const PPS::Input_error& e) { assert(e.code() == code); return; }
+  assert(!"no error");
 }
 
 void test_bad_parameters()
@@ -387,19 +387,19 @@ void test_bad_parameters()
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(0.)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::collapse_distance(1e-200)); });
   expect_error(C::INVALID_PARAMETER, [&] { CGAL::simplify_polygon_partition_2(p, PPS::parameters::maximum_angle(120.)); });
-  CHECK(p.number_of_lines() == copy.number_of_lines() && p.number_of_edges() == copy.number_of_edges());
+  assert(p.number_of_lines() == copy.number_of_lines() && p.number_of_edges() == copy.number_of_edges());
   // a weight so large that the default initial step is below 1e-9: the default minimum step
   // follows it (the error named a parameter that the user had not given)
   {
     Partition q = copy;
     CGAL::simplify_polygon_partition_2(q, PPS::parameters::concurrency_weight(3e6));
-    CHECK(q.is_valid());
+    assert(q.is_valid());
   }
   // a callback that stops at once leaves a valid partition
   const Stats s = CGAL::simplify_polygon_partition_2(
     p, PPS::parameters::callback(std::function<bool(const Partition&, const Stats&)>(
          [](const Partition&, const Stats&) { return false; })));
-  CHECK(s.rounds == 1 && p.is_valid());
+  assert(s.rounds == 1 && p.is_valid());
 }
 
 // The table of the reductions that keeps the first value inserted with each key, against
@@ -416,18 +416,18 @@ void test_first_value_map()
     for(std::uint32_t value = 0; value < n; ++value) {
       const std::uint64_t key = ((rng() % range) << 32) | (rng() % range);
       const std::uint32_t expected = reference.emplace(key, value).first->second;
-      CHECK(map.insert(key, value) == expected);
+      assert(map.insert(key, value) == expected);
     }
-    CHECK(map.size() == reference.size());
+    assert(map.size() == reference.size());
     for(std::uint64_t x = 0; x < range; ++x) // find(): stored keys and absent ones
       for(std::uint64_t y = 0; y < range; y += 7) {
         const std::uint64_t key = (x << 32) | y;
         const auto it = reference.find(key);
-        CHECK(map.find(key) == (it == reference.end() ? PPS::internal::First_value_map::no_value : it->second));
+        assert(map.find(key) == (it == reference.end() ? PPS::internal::First_value_map::no_value : it->second));
       }
     if(reference.size() > 64) ++grown;
   }
-  CHECK(grown > 100); // the trials make the tables grow
+  assert(grown > 100); // the trials make the tables grow
 }
 
 int main()

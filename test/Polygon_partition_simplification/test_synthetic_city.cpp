@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -43,15 +44,6 @@ namespace PPS = CGAL::Polygon_partition_simplification;
 using Point_2 = T::Point_2;
 using Point_3 = T::Point_3;
 using Ring = std::vector<Point_2>;
-
-static int failures = 0;
-#define CHECK(condition, what)                                                                      \
-  do {                                                                                               \
-    if(!(condition)) {                                                                               \
-      std::cerr << "FAILED: " << what << " (" #condition ", line " << __LINE__ << ")" << std::endl; \
-      ++failures;                                                                                    \
-    }                                                                                                \
-  } while(false)
 
 static double area(const Ring& ring) { return CGAL::polygon_area_2(ring.begin(), ring.end(), T::Kernel()); }
 
@@ -80,20 +72,19 @@ static void check_meshes(const T::City& city)
   for(std::size_t b = 0; b < city.buildings.size(); ++b) {
     const std::string name = "building " + std::to_string(b) + " (" + city.kinds[b] + ")";
     T::Mesh mesh = T::truth_mesh(city.buildings[b]);
-    CHECK(CGAL::is_valid_polygon_mesh(mesh), name << ": a valid polygon mesh");
-    CHECK(CGAL::is_closed(mesh), name << ": closed");
-    CHECK(mesh.number_of_faces() == city.buildings[b].faces.size(), name << ": one mesh face per face");
+    assert(CGAL::is_valid_polygon_mesh(mesh));
+    assert(CGAL::is_closed(mesh));
+    assert(mesh.number_of_faces() == city.buildings[b].faces.size());
     PMP::triangulate_faces(mesh);
-    CHECK(CGAL::is_closed(mesh) && PMP::is_outward_oriented(mesh), name << ": outward");
-    CHECK(!PMP::does_self_intersect(mesh), name << ": no self-intersection");
+    assert(CGAL::is_closed(mesh) && PMP::is_outward_oriented(mesh));
+    assert(!PMP::does_self_intersect(mesh));
     const double volume = PMP::volume(mesh), footprint = net_area(city, b);
-    CHECK(volume > 0, name << ": volume " << volume);
-    CHECK(volume >= 4 * footprint * 0.999 && volume <= 15 * footprint * 1.001,
-          name << ": volume " << volume << " for a footprint of " << footprint << " m2");
+    assert(volume > 0);
+    assert(volume >= 4 * footprint * 0.999 && volume <= 15 * footprint * 1.001);
     double floors = 0;
     for(const T::Planar_face& face : city.buildings[b].faces)
       if(face.role == T::FLOOR) floors += face_area(face.vertices);
-    CHECK(std::abs(floors - footprint) < 1e-6 * footprint, name << ": floors " << floors << " m2, footprint " << footprint);
+    assert(std::abs(floors - footprint) < 1e-6 * footprint);
   }
 }
 
@@ -147,32 +138,32 @@ static bool share_an_edge(const Ring& a, const Ring& b)
 // terraced houses share an edge.
 static void check_footprints(const T::City& city)
 {
-  CHECK(city.footprints.size() == city.buildings.size() && city.footprint_holes.size() == city.buildings.size() &&
-          city.kinds.size() == city.buildings.size(), "one footprint, list of holes and kind per building");
+  assert(city.footprints.size() == city.buildings.size() && city.footprint_holes.size() == city.buildings.size() &&
+          city.kinds.size() == city.buildings.size());
   std::vector<CGAL::Polygon_2<EK>> exact;
   for(std::size_t b = 0; b < city.footprints.size(); ++b) {
     const Ring& outer = city.footprints[b];
-    CHECK(outer == city.buildings[b].footprint, "the footprint of building " << b << " is the building's");
-    CHECK(CGAL::is_simple_2(outer.begin(), outer.end(), T::Kernel()) && area(outer) > 0, "footprint " << b << " simple, counterclockwise");
+    assert(outer == city.buildings[b].footprint);
+    assert(CGAL::is_simple_2(outer.begin(), outer.end(), T::Kernel()) && area(outer) > 0);
     for(const Ring& hole : city.footprint_holes[b]) {
-      CHECK(CGAL::is_simple_2(hole.begin(), hole.end(), T::Kernel()) && area(hole) < 0, "hole of " << b << " simple, clockwise");
+      assert(CGAL::is_simple_2(hole.begin(), hole.end(), T::Kernel()) && area(hole) < 0);
       for(const Point_2& p : hole)
-        CHECK(CGAL::bounded_side_2(outer.begin(), outer.end(), p, T::Kernel()) == CGAL::ON_BOUNDED_SIDE, "hole of " << b << " inside");
+        assert(CGAL::bounded_side_2(outer.begin(), outer.end(), p, T::Kernel()) == CGAL::ON_BOUNDED_SIDE);
     }
     exact.push_back(exact_polygon(outer));
   }
   for(std::size_t a = 0; a < exact.size(); ++a)
     for(std::size_t b = a + 1; b < exact.size(); ++b)
       if(CGAL::do_overlap(exact[a].bbox(), exact[b].bbox()))
-        CHECK(!interiors_meet(exact[a], exact[b]) && !interiors_meet(exact[b], exact[a]), "footprints " << a << " and " << b << " do not overlap");
+        assert(!interiors_meet(exact[a], exact[b]) && !interiors_meet(exact[b], exact[a]));
   std::size_t pairs = 0;
   for(std::size_t b = 0; b + 1 < city.kinds.size(); ++b)
     if(city.kinds[b] == "terraced_gable") {
       ++pairs;
-      CHECK(city.kinds[b + 1] == "terraced_flat", "the flat terraced house follows the gable one");
-      CHECK(share_an_edge(city.footprints[b], city.footprints[b + 1]), "terraced houses " << b << " share an edge");
+      assert(city.kinds[b + 1] == "terraced_flat");
+      assert(share_an_edge(city.footprints[b], city.footprints[b + 1]));
     }
-  CHECK(pairs == city.buildings.size() / 9 + (city.buildings.size() % 9 >= 8 ? 1 : 0), pairs << " pairs of terraced houses");
+  assert(pairs == city.buildings.size() / 9 + (city.buildings.size() % 9 >= 8 ? 1 : 0));
 }
 
 struct Class_counts
@@ -196,37 +187,36 @@ static Class_counts count_classes(const T::City& city, int tree_class)
 static void check_samples(const T::City& city, const T::City_options& options)
 {
   const Class_counts counts = count_classes(city, options.tree_class);
-  CHECK(counts.other == 0 && counts.ground > 0 && counts.building > 0, "classes 2, 6 and the trees' only");
-  CHECK(options.trees == (counts.tree > 0), counts.tree << " tree points");
+  assert(counts.other == 0 && counts.ground > 0 && counts.building > 0);
+  assert(options.trees == (counts.tree > 0));
   double ground_area = city.extent.area();
   for(std::size_t b = 0; b < city.buildings.size(); ++b) ground_area -= net_area(city, b);
-  CHECK(std::abs(double(counts.ground) - options.density * ground_area) < 0.001 * options.density * ground_area + 10,
-        counts.ground << " ground points on " << ground_area << " m2");
+  assert(std::abs(double(counts.ground) - options.density * ground_area) < 0.001 * options.density * ground_area + 10);
   std::vector<std::size_t> wall_points(city.buildings.size(), 0), roof_points(city.buildings.size(), 0);
   const double tolerance = 6 * options.noise + 1e-9;
   for(const T::City_sample& s : city.samples) {
     const Point_2 below(s.point.x(), s.point.y());
     if(s.classification == T::las_ground_class) {
-      CHECK(s.building == -1 && std::abs(s.point.z()) <= tolerance, "a ground point on the ground");
+      assert(s.building == -1 && std::abs(s.point.z()) <= tolerance);
       for(std::size_t b = 0; b < city.buildings.size(); ++b) {
         bool inside = CGAL::bounded_side_2(city.footprints[b].begin(), city.footprints[b].end(), below, T::Kernel()) == CGAL::ON_BOUNDED_SIDE;
         for(const Ring& hole : city.footprint_holes[b])
           inside = inside && CGAL::bounded_side_2(hole.begin(), hole.end(), below, T::Kernel()) == CGAL::ON_UNBOUNDED_SIDE;
-        CHECK(!inside, "a ground point under building " << b);
+        assert(!inside);
       }
     } else if(s.classification == T::las_building_class) {
-      CHECK(s.building >= 0 && std::size_t(s.building) < city.buildings.size(), "a building point has its building");
+      assert(s.building >= 0 && std::size_t(s.building) < city.buildings.size());
       if(s.building < 0 || std::size_t(s.building) >= city.buildings.size()) continue;
       const std::vector<T::Planar_face>& faces = city.buildings[std::size_t(s.building)].faces;
-      CHECK(s.face >= 0 && std::size_t(s.face) < faces.size() && faces[std::size_t(s.face)].role != T::FLOOR, "a roof or wall face");
+      assert(s.face >= 0 && std::size_t(s.face) < faces.size() && faces[std::size_t(s.face)].role != T::FLOOR);
       if(s.face < 0 || std::size_t(s.face) >= faces.size()) continue;
       const T::internal::Plane_frame plane = T::internal::plane_frame(faces[std::size_t(s.face)].vertices);
-      CHECK(std::abs((s.point - plane.origin) * plane.normal) <= tolerance, "a building point on the plane of its face");
+      assert(std::abs((s.point - plane.origin) * plane.normal) <= tolerance);
       ++(faces[std::size_t(s.face)].role == T::WALL ? wall_points : roof_points)[std::size_t(s.building)];
     } else {
-      CHECK(s.building == -1 && s.point.z() > 0 && s.point.z() < 16, "a tree point between 0 and 16 m");
+      assert(s.building == -1 && s.point.z() > 0 && s.point.z() < 16);
       for(std::size_t b = 0; b < city.buildings.size(); ++b)
-        CHECK(T::internal::distance_to_polygon(below, city.footprints[b]) >= 1.5, "a tree point 1.5 m from footprint " << b);
+        assert(T::internal::distance_to_polygon(below, city.footprints[b]) >= 1.5);
     }
   }
   for(std::size_t b = 0; b < city.buildings.size(); ++b) {
@@ -234,10 +224,9 @@ static void check_samples(const T::City& city, const T::City_options& options)
     std::size_t roofs = 0;
     for(const T::Planar_face& face : city.buildings[b].faces)
       if(face.role == T::ROOF) roof_area += face_area(face.vertices), ++roofs;
-    CHECK(std::abs(double(roof_points[b]) - options.density * roof_area) <= 0.5 * double(roofs) + 1e-9,
-          "building " << b << ": " << roof_points[b] << " roof points on " << roof_area << " m2");
+    assert(std::abs(double(roof_points[b]) - options.density * roof_area) <= 0.5 * double(roofs) + 1e-9);
     const bool without_walls = city.kinds[b].compare(0, 9, "no_walls_") == 0;
-    CHECK(without_walls == (wall_points[b] == 0), "building " << b << " (" << city.kinds[b] << "): " << wall_points[b] << " wall points");
+    assert(without_walls == (wall_points[b] == 0));
   }
 }
 
@@ -261,17 +250,17 @@ static void check_shared_walls(const T::City& city, double noise)
     for(std::size_t house : {b, b + 1}) {
       std::size_t shared = 0;
       for(std::size_t f = 0; f < city.buildings[house].faces.size(); ++f) shared += on_shared_wall(house, int(f)) ? 1 : 0;
-      CHECK(shared == 1, "terraced house " << house << " has one wall on its neighbour's footprint, not " << shared);
+      assert(shared == 1);
     }
     std::size_t seen = 0;
     for(const T::City_sample& s : city.samples) {
-      if(s.building == int(b + 1)) CHECK(!on_shared_wall(b + 1, s.face), "a point of the flat terraced house " << b + 1 << " on the shared wall");
+      if(s.building == int(b + 1)) assert(!on_shared_wall(b + 1, s.face));
       if(s.building == int(b) && on_shared_wall(b, s.face)) {
         ++seen;
-        CHECK(s.point.z() >= roof - 6 * noise, "a point of the shared wall of " << b << " at " << s.point.z() << " m under the roof at " << roof);
+        assert(s.point.z() >= roof - 6 * noise);
       }
     }
-    CHECK(seen > 0, "the gable end of " << b << " is seen above its neighbour");
+    assert(seen > 0);
   }
 }
 
@@ -289,16 +278,16 @@ static bool same_samples(const T::City& a, const T::City& b)
 // the density or the trees.
 static void check_determinism(const T::City& city, const T::City_options& options)
 {
-  CHECK(same_samples(city, T::make_city(options)), "the same seed gives the same samples");
+  assert(same_samples(city, T::make_city(options)));
   T::City_options other = options;
   other.seed = options.seed + 1;
   const T::City reseeded = T::make_city(other);
-  CHECK(!same_samples(city, reseeded) && reseeded.footprints != city.footprints, "another seed gives another city");
+  assert(!same_samples(city, reseeded) && reseeded.footprints != city.footprints);
   other = options;
   other.density = options.density / 2, other.trees = !options.trees;
   const T::City sparser = T::make_city(other);
-  CHECK(sparser.footprints == city.footprints && sparser.footprint_holes == city.footprint_holes, "the layout ignores the density and the trees");
-  CHECK((count_classes(sparser, options.tree_class).tree > 0) == other.trees, "trees only when asked");
+  assert(sparser.footprints == city.footprints && sparser.footprint_holes == city.footprint_holes);
+  assert((count_classes(sparser, options.tree_class).tree > 0) == other.trees);
 }
 
 template <class T_>
@@ -321,9 +310,9 @@ static void check_las(const T::City& city, int tree_class, const std::string& pa
   T::write_city_las(city, path);
   namespace IO = CGAL::Lex_optimal_chains::IO;
   const std::vector<Point_3> all = IO::read_las_points<Point_3>(path);
-  CHECK(all.size() == city.samples.size(), path << ": " << all.size() << " points read back of " << city.samples.size());
+  assert(all.size() == city.samples.size());
   for(std::size_t i = 0; i < all.size() && i < city.samples.size(); ++i)
-    CHECK(near(all[i], city.samples[i].point, 0.0005 + 1e-9), path << ": point " << i << " within 0.5 mm");
+    assert(near(all[i], city.samples[i].point, 0.0005 + 1e-9));
   for(int c : {T::las_ground_class, T::las_building_class, tree_class}) {
     const std::vector<Point_3> read = IO::read_las_points<Point_3>(path, {c});
     std::vector<Point_3> expected;
@@ -331,23 +320,21 @@ static void check_las(const T::City& city, int tree_class, const std::string& pa
       if(s.classification == c) expected.push_back(s.point);
     bool same = read.size() == expected.size();
     for(std::size_t i = 0; same && i < read.size(); ++i) same = near(read[i], expected[i], 0.0005 + 1e-9);
-    CHECK(same, path << ": the " << read.size() << " points of class " << c << " (" << expected.size() << " written)");
+    assert(same);
   }
   std::ifstream in(path, std::ios::binary);
   std::vector<unsigned char> header(227);
   in.read(reinterpret_cast<char*>(header.data()), 227);
-  CHECK(std::memcmp(header.data(), "LASF", 4) == 0 && header[24] == 1 && header[25] == 2 && header[104] == 1 &&
-          field<std::uint16_t>(header, 94) == 227 && field<std::uint32_t>(header, 96) == 227 && field<std::uint16_t>(header, 105) == 28,
-        path << ": LAS 1.2, format 1, header of 227 bytes, records of 28");
-  CHECK(field<std::uint32_t>(header, 107) == city.samples.size() && field<std::uint32_t>(header, 111) == city.samples.size() &&
-          field<std::uint32_t>(header, 115) == 0, path << ": point count and returns");
+  assert(std::memcmp(header.data(), "LASF", 4) == 0 && header[24] == 1 && header[25] == 2 && header[104] == 1 &&
+          field<std::uint16_t>(header, 94) == 227 && field<std::uint32_t>(header, 96) == 227 && field<std::uint16_t>(header, 105) == 28);
+  assert(field<std::uint32_t>(header, 107) == city.samples.size() && field<std::uint32_t>(header, 111) == city.samples.size() &&
+          field<std::uint32_t>(header, 115) == 0);
   for(int c = 0; c < 3; ++c) {
     double low = std::numeric_limits<double>::infinity(), high = -low, written_low = low;
     for(const Point_3& p : all) low = (std::min)(low, p[c]), high = (std::max)(high, p[c]);
     for(const T::City_sample& s : city.samples) written_low = (std::min)(written_low, s.point[c]);
-    CHECK(field<double>(header, 131 + 8 * c) == 0.001 && field<double>(header, 155 + 8 * c) == written_low,
-          path << ": scale 0.001 and offset at the minimum corner (" << c << ")");
-    CHECK(field<double>(header, 179 + 16 * c) == high && field<double>(header, 187 + 16 * c) == low, path << ": bounds (" << c << ")");
+    assert(field<double>(header, 131 + 8 * c) == 0.001 && field<double>(header, 155 + 8 * c) == written_low);
+    assert(field<double>(header, 179 + 16 * c) == high && field<double>(header, 187 + 16 * c) == low);
   }
 }
 
@@ -361,11 +348,11 @@ static void check_ply(const T::City& city, const std::string& path)
       in, std::back_inserter(read), CGAL::IO::make_ply_point_reader(CGAL::First_of_pair_property_map<std::pair<Point_3, unsigned char>>()),
       std::make_pair(CGAL::Second_of_pair_property_map<std::pair<Point_3, unsigned char>>(),
                      CGAL::IO::PLY_property<unsigned char>("classification")));
-  CHECK(ok && read.size() == city.samples.size(), path << ": " << read.size() << " points read back");
+  assert(ok && read.size() == city.samples.size());
   bool same = read.size() == city.samples.size();
   for(std::size_t i = 0; same && i < read.size(); ++i)
     same = read[i].first == city.samples[i].point && int(read[i].second) == city.samples[i].classification;
-  CHECK(same, path << ": the same points and classes");
+  assert(same);
 }
 
 // The GeoJSON read back: one feature per building, its id, its rings closed and equal to the
@@ -376,18 +363,18 @@ static void check_geojson(const T::City& city, const std::string& path)
 #ifdef SYNTHETIC_CITY_WITH_JSON
   std::ifstream in(path);
   const nlohmann::json json = nlohmann::json::parse(in);
-  CHECK(json["type"] == "FeatureCollection" && json["features"].size() == city.buildings.size(), path << ": one feature per building");
+  assert(json["type"] == "FeatureCollection" && json["features"].size() == city.buildings.size());
   for(std::size_t b = 0; b < json["features"].size() && b < city.buildings.size(); ++b) {
     const nlohmann::json& feature = json["features"][b];
-    CHECK(feature["properties"]["id"] == b && feature["geometry"]["type"] == "Polygon", path << ": feature " << b);
+    assert(feature["properties"]["id"] == b && feature["geometry"]["type"] == "Polygon");
     const nlohmann::json& rings = feature["geometry"]["coordinates"];
-    CHECK(rings.size() == 1 + city.footprint_holes[b].size(), path << ": rings of " << b);
+    assert(rings.size() == 1 + city.footprint_holes[b].size());
     for(std::size_t r = 0; r < rings.size() && r <= city.footprint_holes[b].size(); ++r) {
       const Ring& ring = r == 0 ? city.footprints[b] : city.footprint_holes[b][r - 1];
       bool same = rings[r].size() == ring.size() + 1;
       for(std::size_t i = 0; same && i <= ring.size(); ++i)
         same = rings[r][i][0].get<double>() == ring[i % ring.size()].x() && rings[r][i][1].get<double>() == ring[i % ring.size()].y();
-      CHECK(same, path << ": ring " << r << " of feature " << b << " closed, equal to the footprint");
+      assert(same);
     }
   }
 #else
@@ -437,7 +424,7 @@ int main(int argc, char** argv)
   const T::City_options options;
   const T::City city = T::make_city(options);
   report("default", city, options);
-  CHECK(city.buildings.size() == 12, "12 buildings by default");
+  assert(city.buildings.size() == 12);
   check_meshes(city);
   check_footprints(city);
   check_samples(city, options);
@@ -452,7 +439,7 @@ int main(int argc, char** argv)
   T::City_options small;
   small.buildings = 16, small.tree_class = 1, small.wall_density_factor = 0.3, small.seed = 7, small.spacing = 26;
   const T::City small_city = T::make_city(small);
-  CHECK(small_city.buildings.size() == 16, "16 buildings");
+  assert(small_city.buildings.size() == 16);
   check_meshes(small_city);
   check_footprints(small_city);
   check_samples(small_city, small);
@@ -463,10 +450,10 @@ int main(int argc, char** argv)
   large.buildings = 120;
   const T::City large_city = T::make_city(large);
   report("120 buildings", large_city, large);
-  CHECK(large_city.buildings.size() == 120, "120 buildings");
+  assert(large_city.buildings.size() == 120);
   check_meshes(large_city);
   check_footprints(large_city);
 
-  if(failures == 0) std::cout << "test_synthetic_city: all checks passed" << std::endl;
-  return failures == 0 ? 0 : 1;
+  std::cout << "test_synthetic_city: all checks passed" << std::endl;
+  return 0;
 }
