@@ -7,7 +7,11 @@
 #                                     build the LOD2 model of building.ply (a scan from libcgal-demo)
 #                                     and of the buildings of the labelled tile b9_training.ply
 #   bash scripts/quickstart.sh test   same set-up plus Qt5 and Xvfb, then build and run all tests
-#                                     with ctest, the headless tests of the demo plugins included
+#                                     with ctest, the headless tests of the demo plugins included,
+#                                     against Debian's CGAL 5.5.1; then the tests and examples of
+#                                     both packages again against CGAL 6.0.1 (Debian 13's
+#                                     libcgal-dev, unpacked into build/cgal6 by
+#                                     scripts/fetch_cgal6.sh, never installed), in build-cgal6/
 #   bash scripts/quickstart.sh demo   same set-up, builds CGAL's Polyhedron demo with the plugins
 #                                     of both packages (build-demo/) and starts it on kitten.xyz
 #                                     and the 25 footprints (with a display; without one, says
@@ -20,7 +24,8 @@ cd "$(dirname "$0")/.."
 packages=(cmake g++ make ccache libcgal-dev libcgal-demo libeigen3-dev libtbb-dev libgmp-dev
           libmpfr-dev libboost-dev libboost-timer-dev libcli11-dev nlohmann-json3-dev doxygen)
 # the tiles over MPI ranks (lex_reconstruct_mpi) and their test with 2 and 3 ranks
-if [ "$mode" = test ]; then packages+=(libopenmpi-dev openmpi-bin); fi
+# and the keys of Debian 13 (trixie), whose CGAL 6.0.1 the tests also use
+if [ "$mode" = test ]; then packages+=(libopenmpi-dev openmpi-bin debian-archive-keyring); fi
 # the Polyhedron demo (Qt5, QtScript, CGAL's Qt5 headers) and its headless run (Xvfb, Mesa)
 if [ "$mode" != run ]; then
   packages+=(qtbase5-dev qtscript5-dev libqt5svg5-dev libqt5opengl5-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri)
@@ -73,6 +78,8 @@ elif [ "$mode" = demo ]; then
 else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DURBAN_BUILD_DEMO=ON
   cmake --build build -j"$jobs"
-  cd build
-  ctest --output-on-failure -j"$jobs"
+  (cd build && ctest --output-on-failure -j"$jobs")
+  # the second pass: only the tests and examples of the packages, without the MPI programs (the
+  # sources of lod2_reconstruct and lex_reconstruct, built once more) and without the demo
+  JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF
 fi
