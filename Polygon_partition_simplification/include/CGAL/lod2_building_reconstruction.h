@@ -123,48 +123,58 @@ in the planes of `detect_building_planes_3()`, `std::size_t(-1)` for walls and f
 \cgalNamedParamsBegin
   \cgalParamNBegin{point_map}
     \cgalParamDescription{a property map associating points to the elements of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the iterator of `PointRange` and whose value type is `K::Point_3`}
     \cgalParamDefault{`CGAL::Identity_property_map`}
   \cgalParamNEnd
   \cgalParamNBegin{normal_map}
     \cgalParamDescription{a property map associating normals to the elements of `points`,
                           used by the region growing}
+    \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the iterator of `PointRange` and whose value type is `K::Vector_3`}
     \cgalParamDefault{normals estimated by `pca_estimate_normals()` (12 neighbours)}
   \cgalParamNEnd
   \cgalParamNBegin{plane_index_map}
     \cgalParamDescription{a property map associating to the elements of `points` the index of
                           their plane (`int`, -1 for none), instead of the region growing}
+    \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the iterator of `PointRange` and whose value type is `int`}
     \cgalParamDefault{planes detected}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_distance}
     \cgalParamDescription{largest distance of a point to its plane (region growing), and of
                           the points that bound an intersection segment to its line}
+    \cgalParamType{`double`}
     \cgalParamDefault{3 times the average spacing (distance to the 6 nearest neighbours)}
   \cgalParamNEnd
   \cgalParamNBegin{maximum_normal_deviation}
     \cgalParamDescription{largest angle in degrees between a point's normal and its plane's
                           (`maximum_angle` is the simplification's \f$\alpha_{max}\f$)}
+    \cgalParamType{`double`}
     \cgalParamDefault{20}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_region_size}
     \cgalParamDescription{smallest number of points of a plane}
+    \cgalParamType{`std::size_t`}
     \cgalParamDefault{the larger of 20 and the number of points / 2000}
   \cgalParamNEnd
   \cgalParamNBegin{concurrency_weight, orthogonality_weight, collapse_distance}
     \cgalParamDescription{\f$\lambda_1\f$, \f$\lambda_2\f$, \f$\epsilon\f$ of the simplification
                           (`simplify_polygon_partition_2()`, whose other parameters are passed on too)}
+    \cgalParamType{`double`}
     \cgalParamDefault{those of `simplify_polygon_partition_2()`}
   \cgalParamNEnd
   \cgalParamNBegin{height_threshold}
     \cgalParamDescription{\f$\epsilon\f$ of the data term: the vertical distance beyond which a
                           point counts the same}
+    \cgalParamType{`double`}
     \cgalParamDefault{5 times the average spacing}
   \cgalParamNEnd
   \cgalParamNBegin{regularization_length}
     \cgalParamDescription{\f$\mu\f$, a length: the smallest feature to keep}
+    \cgalParamType{`double`}
     \cgalParamDefault{2 times the average spacing}
   \cgalParamNEnd
   \cgalParamNBegin{facade_weight}
     \cgalParamDescription{\f$p_e\f$ on the edges along a facade segment (1 on the others)}
+    \cgalParamType{`double`}
     \cgalParamDefault{0.25}
   \cgalParamNEnd
   \cgalParamNBegin{walls_at_facades}
@@ -172,15 +182,18 @@ in the planes of `detect_building_planes_3()`, `std::size_t(-1)` for walls and f
                           in front of them, higher behind), so the walls stand on the facades;
                           if `false`, the lift sees the points from above only (as the thesis),
                           and walls stand at the roofs' edges}
+    \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
   \cgalParamNBegin{minimum_building_height}
     \cgalParamDescription{smallest height of a roof above the ground}
+    \cgalParamType{`double`}
     \cgalParamDefault{10 times the average spacing}
   \cgalParamNEnd
   \cgalParamNBegin{height_tolerance}
     \cgalParamDescription{heights closer than this at a point of the partition are made one
                           (no wall between them); at most half of `minimum_building_height`}
+    \cgalParamType{`double`}
     \cgalParamDefault{the average spacing}
   \cgalParamNEnd
 \cgalNamedParamsEnd
