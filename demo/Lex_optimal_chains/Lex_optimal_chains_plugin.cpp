@@ -49,6 +49,7 @@
 #include <CGAL/lex_optimal_closed_surface.h>
 #include <CGAL/lex_optimal_feature_reconstruction.h>
 #include <CGAL/lex_optimal_open_surface.h>
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -128,7 +129,7 @@ std::vector<Point> points_of(const Scene_points_with_normal_item& item)
 // The progress dialog of a run, driven by the library's progress callback (on this thread:
 // the computation runs in the callback's caller, so the events are processed here, at most
 // every 100 ms). It shows the stage; Cancel makes the callback return false, on which the
-// library throws Input_error(CANCELLED) before it modifies the output mesh. `cancel_at`
+// library throws Lex_optimal_chains::Cancelled before it modifies the output mesh. `cancel_at`
 // (scripts only, for the tests) presses Cancel when the progress reaches it.
 class Progress
 {
@@ -421,12 +422,14 @@ int Polyhedron_demo_lex_optimal_chains_plugin::run(const Lex_request& r, bool in
     QApplication::setOverrideCursor(Qt::WaitCursor);
     try {
       summary = reconstruct(r, points, progress, *mesh);
-    } catch(const LOC::Input_error& e) {
+    } catch(const LOC::Cancelled&) {
       QApplication::restoreOverrideCursor();
-      if(e.code() != LOC::Input_error_code::CANCELLED) return fail(QString::fromStdString(e.what()), interactive);
       last_error = tr("cancelled");
       CGAL::Three::Three::information(tr("%1: cancelled, the scene is unchanged").arg(title));
       return -1;
+    } catch(const LOC::Input_error& e) {
+      QApplication::restoreOverrideCursor();
+      return fail(QString::fromStdString(e.what()), interactive);
     } catch(const std::exception& e) { // not an input error: a bug, reported rather than a crash
       QApplication::restoreOverrideCursor();
       return fail(tr("unexpected error: %1").arg(e.what()), interactive);

@@ -1,9 +1,9 @@
 // The processes that run one command together: the MPI ranks of lex_reconstruct_mpi and
 // lod2_reconstruct_mpi (built with PROCESS_GROUP_WITH_MPI), or the one process of
 // lex_reconstruct and lod2_reconstruct. The programs need only what is here: the rank and the
-// number of ranks, a barrier, reductions of a few numbers, and the bytes of every rank gathered
-// on the first (collective: every rank calls them in the same order). Without MPI they are the
-// identity.
+// number of ranks, the deal of jobs to the ranks, a barrier, reductions of a few numbers, and
+// the bytes of every rank gathered on the first (collective: every rank calls them in the same
+// order). Without MPI they are the identity.
 #ifndef URBAN_EXAMPLES_PROCESS_GROUP_H
 #define URBAN_EXAMPLES_PROCESS_GROUP_H
 
@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,23 @@ public:
   std::size_t rank() const { return rank_; }
   std::size_t size() const { return size_; }
   bool is_root() const { return rank_ == 0; }
+
+  // The rank of each job, given its cost (its number of points): by decreasing cost (then by
+  // increasing index), each to the rank with the smallest total cost so far (then the lowest
+  // rank), longest processing time first. Only the costs decide, so every rank that has the
+  // same costs makes the same deal (no communication).
+  std::vector<std::size_t> deal(const std::vector<std::size_t>& costs) const
+  {
+    std::vector<std::size_t> order(costs.size()), rank_of(costs.size(), 0), load(size_, 0);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
+    for(std::size_t job : order) {
+      const std::size_t r = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
+      rank_of[job] = r;
+      load[r] += costs[job];
+    }
+    return rank_of;
+  }
 
   void barrier() const
   {

@@ -42,6 +42,7 @@
 #include <CGAL/Lex_optimal_chains/IO/input_files.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include "Peak_memory.h"
 #include "Process_group.h"
 
 #include <CLI/CLI.hpp>
@@ -572,9 +573,11 @@ static LOC::Tile_merge_report merge_tile_files(const Tile_directory& directory, 
   return m;
 }
 
-// The report of every rank's tiles, on every rank: a tile's numbers come from the rank that
-// made it (the others have zeros), the times and the peak memory are the largest over the ranks.
-static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_report& r)
+// The report of every rank's tiles and the peak memory of each tile (`tile_peak_bytes`, by
+// tile), on every rank: a tile's numbers come from the rank that made it (the others have
+// zeros), the times are the largest over the ranks.
+static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_report& r,
+                                std::vector<std::size_t>& tile_peak_bytes)
 {
   constexpr std::size_t fields = 7;
   std::vector<double> values(fields * r.tiles.size(), 0);
@@ -583,7 +586,7 @@ static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_r
     if(!tile.reconstructed) continue;
     const double v[fields] = {1, double(tile.number_of_points), double(tile.number_of_removed_points),
                               double(tile.mesh_vertices), double(tile.mesh_faces), tile.seconds,
-                              double(tile.peak_memory_bytes)};
+                              double(tile_peak_bytes[t])};
     std::copy(v, v + fields, values.begin() + std::ptrdiff_t(fields * t));
   }
   values = group.sum(values);
@@ -596,15 +599,17 @@ static void gather_tile_reports(const Process_group& group, LOC::Tiled_surface_r
     tile.mesh_vertices = std::size_t(v[3]);
     tile.mesh_faces = std::size_t(v[4]);
     tile.seconds = v[5];
-    tile.peak_memory_bytes = std::size_t(v[6]);
+    tile_peak_bytes[t] = std::size_t(v[6]);
   }
   r.seam_seconds = group.max(r.seam_seconds);
   r.tiles_seconds = group.max(r.tiles_seconds);
   r.total_seconds = group.max(r.total_seconds);
 }
 
+// `rank_of` and `tile_peak_bytes`: the rank and the peak memory of each tile
 static nlohmann::json tiles_json(const std::string& input, const std::string& directory, const Process_group& group,
-                                 const LOC::Tiled_surface_report& r, bool memory_measured, bool out_of_core)
+                                 const LOC::Tiled_surface_report& r, const std::vector<std::size_t>& rank_of,
+                                 const std::vector<std::size_t>& tile_peak_bytes, bool memory_measured, bool out_of_core)
 {
   nlohmann::json j;
   j["input"] = input;
@@ -624,11 +629,13 @@ static nlohmann::json tiles_json(const std::string& input, const std::string& di
   j["tile_memory_measured"] = memory_measured;
   j["out_of_core"] = out_of_core;
   nlohmann::json per_tile = nlohmann::json::array();
-  for(const LOC::Tile_report& tile : r.tiles)
-    per_tile.push_back({{"column", tile.column}, {"row", tile.row}, {"rank", tile.share}, {"points", tile.number_of_points},
+  for(std::size_t t = 0; t < r.tiles.size(); ++t) {
+    const LOC::Tile_report& tile = r.tiles[t];
+    per_tile.push_back({{"column", tile.column}, {"row", tile.row}, {"rank", rank_of[t]}, {"points", tile.number_of_points},
                         {"cycle_vertices", tile.number_of_cycle_vertices}, {"removed_points", tile.number_of_removed_points},
                         {"vertices", tile.mesh_vertices}, {"faces", tile.mesh_faces}, {"seconds", tile.seconds},
-                        {"peak_rss_mb", double(tile.peak_memory_bytes) / (1024.0 * 1024.0)}});
+                        {"peak_rss_mb", double(tile_peak_bytes[t]) / (1024.0 * 1024.0)}});
+  }
   j["per_tile"] = per_tile;
   return j;
 }
@@ -651,26 +658,38 @@ static int run_tiles(const std::string& input, const std::string& directory, con
   settle_errors(group, error, [] {});
   const LOC::Coefficient_field field = t.coefficients == "z2" ? LOC::Coefficient_field::Z2 : LOC::Coefficient_field::Q;
 
-  // This rank's share of the tiles. Each tile is written as soon as it is reconstructed, and
-  // freed: the memory is that of the tiles being reconstructed. On an error, the tiles
-  // written (and the directory, if created) are removed.
+  // This rank's share of the tiles: every rank deals the tiles out alike, by their numbers of
+  // points (Process_group::deal()), and keeps its own. Each tile is written as soon as it is
+  // reconstructed, and freed: the memory is that of the tiles being reconstructed. On an
+  // error, the tiles written (and the directory, if created) are removed. With one thread the
+  // peak memory of each tile is measured around it (Peak_memory.h).
+  const bool measure_memory = options.json && options.threads == 1;
+  Tile_peak_memory memory(measure_memory);
+  std::vector<std::size_t> rank_of; // the rank of each tile
+  auto deal = [&](const std::vector<std::size_t>& points_per_tile) {
+    rank_of = group.deal(points_per_tile);
+    std::vector<bool> mine(rank_of.size());
+    for(std::size_t k = 0; k < mine.size(); ++k) mine[k] = rank_of[k] == group.rank();
+    memory.start();
+    return mine;
+  };
   CGAL::Real_timer io;
   auto write_tile = [&](const LOC::Tile_report& tile, Mesh& mesh) {
+    memory.tile_done(tile.column, tile.row);
     io.start();
     tile_directory->write(mesh, tile.column, tile.row, options.ascii);
     mesh = Mesh();
     io.stop();
+    memory.visitor_done();
   };
-  const bool measure_memory = options.json && options.threads == 1;
   LOC::Tiled_surface_report r;
   try {
     const auto np = LOC::parameters::seam_spacing(t.seam_spacing,
                     LOC::parameters::coefficient_field(field,
                     LOC::parameters::keep_non_manifold(options.keep_non_manifold,
                     LOC::parameters::number_of_threads(options.threads,
-                    LOC::parameters::tile_share(LOC::Tile_share{group.rank(), group.size()},
-                    LOC::parameters::measure_tile_memory(measure_memory,
-                    LOC::parameters::tile_visitor(write_tile)))))));
+                    LOC::parameters::tile_filter(deal,
+                    LOC::parameters::tile_visitor(write_tile))))));
     std::vector<Mesh> tiles;
     if(t.out_of_core) { // the file read twice, the points bucketed into files
       const std::string buckets = t.bucket_directory.empty() ? tile_directory->parent() : t.bucket_directory;
@@ -689,7 +708,9 @@ static int run_tiles(const std::string& input, const std::string& directory, con
     if(group.is_root()) tile_directory->remove_if_created();
   };
   settle_errors(group, error, undo);
-  gather_tile_reports(group, r);
+  std::vector<std::size_t> tile_peak_bytes(r.tiles.size());
+  for(std::size_t k = 0; k < r.tiles.size(); ++k) tile_peak_bytes[k] = memory.tile_peak(r.tiles[k].column, r.tiles[k].row);
+  gather_tile_reports(group, r, tile_peak_bytes);
   const double write_s = group.max(io.time());
 
   // the union, by the first rank, from the files of all (written once every rank is here)
@@ -710,11 +731,11 @@ static int run_tiles(const std::string& input, const std::string& directory, con
   }
   settle_errors(group, error, undo);
   // the peak of the largest rank, union included (measuring the tiles resets getrusage's peak:
-  // the library's report has the peak before and during the tiles)
-  const double peak_mb = group.max(std::max(peak_rss_mb(), double(r.peak_memory_bytes) / (1024.0 * 1024.0)));
+  // `memory` has the peak before and during the tiles)
+  const double peak_mb = group.max(std::max(peak_rss_mb(), double(memory.call_peak()) / (1024.0 * 1024.0)));
   if(!group.is_root()) return 0;
   if(options.json) {
-    nlohmann::json j = tiles_json(input, directory, group, r, measure_memory, t.out_of_core);
+    nlohmann::json j = tiles_json(input, directory, group, r, rank_of, tile_peak_bytes, measure_memory, t.out_of_core);
     j["merge_s"] = merge_watch.time();
     j["write_s"] = write_s + merged_io.time(); // the tiles' within tiles_s
     j["total_s"] = r.total_seconds + merge_watch.time() + merged_io.time();

@@ -9,6 +9,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/lex_optimal_feature_reconstruction.h>
+#include <CGAL/lex_optimal_homologous_chain.h>
 #include <CGAL/Lex_optimal_chains/triangulation_complex.h>
 #include <CGAL/boost/graph/generators.h>
 

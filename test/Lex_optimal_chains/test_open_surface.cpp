@@ -293,8 +293,14 @@ void test_bad_input(CGAL::Random& rng)
   nan_points[3] = Point(std::nan(""), 0, 0);
   expect_error(LOC::Input_error_code::NON_FINITE_COORDINATE, [&] { run(nan_points, {polygon}); });
   expect_error(LOC::Input_error_code::EMPTY_INPUT, [&] { LOC::footprint_boundary(std::vector<Point>()); });
-  // a callback that says no at the very end (progress 1) cancels too, before the mesh is touched
-  expect_error(LOC::Input_error_code::CANCELLED, [&] {
+  // a callback that says no at the start, half-way or at the very end (progress 1) cancels,
+  // before the mesh is touched
+  for(double stop : {0.0, 0.5})
+    expect_cancelled([&] {
+      CGAL::lex_optimal_open_surface_reconstruction(points, std::vector<std::vector<Point>>{polygon}, mesh,
+        LOC::parameters::callback(std::function<bool(double)>([stop](double x) { return x < stop; })));
+    });
+  expect_cancelled([&] {
     CGAL::lex_optimal_open_surface_reconstruction(points, std::vector<std::vector<Point>>{polygon}, mesh,
       LOC::parameters::callback(std::function<bool(double)>([](double x) { return x < 1; })));
   });

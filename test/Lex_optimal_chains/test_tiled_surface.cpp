@@ -2,8 +2,8 @@
 // synthetic terrain with buildings and of CGAL's aerial scan b9_training.ply meet exactly at
 // their seams (the union is one valid mesh with one boundary loop, every seam edge has a face
 // of each tile); away from the seams the tiles give the triangles of the untiled surface; the
-// result does not depend on the number of threads nor on the order of the points; bad input is
-// refused with its reason.
+// result does not depend on the number of threads nor on the order of the points; a tile
+// filter chooses the tiles without changing them; bad input is refused with its reason.
 //   test_tiled_surface [CGAL data directory]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/read_points.h>
@@ -152,10 +152,18 @@ void check_out_of_core(const std::vector<Point>& points, double tile_size, const
       for(std::size_t i = 0; i < points.size(); ++i) f(points[c % 2 == 0 ? i : points.size() - 1 - i]);
   };
   std::vector<Mesh> streamed;
-  const LOC::Tiled_surface_report s =
-    CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(source, tile_size, dir.string(), streamed,
-                                                               LOC::parameters::number_of_threads(2u));
+  std::vector<std::size_t> points_per_cell; // what the tile filter gets: the distinct points of each cell
+  auto every_tile = [&](const std::vector<std::size_t>& p) {
+    points_per_cell = p;
+    return std::vector<bool>(p.size(), true);
+  };
+  const LOC::Tiled_surface_report s = CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(
+    source, tile_size, dir.string(), streamed,
+    LOC::parameters::number_of_threads(2u, LOC::parameters::tile_filter(every_tile)));
   assert(passes == 2);
+  std::size_t in_cells = 0;
+  for(std::size_t n : points_per_cell) in_cells += n;
+  assert(points_per_cell.size() == tiles.size() && in_cells == r.number_of_input_points);
   assert(s.number_of_input_points == r.number_of_input_points && s.seam_spacing == r.seam_spacing);
   assert(s.number_of_seam_points == r.number_of_seam_points && streamed.size() == tiles.size());
   for(std::size_t t = 0; t < tiles.size(); ++t) {
@@ -225,54 +233,51 @@ void test_synthetic_terrain()
   check_out_of_core(points, 34, tiles, r, 1);
   check_out_of_core(points, 34, tiles, r, 2);
 
-  // Dealt out to 2 and to 3 processes (Tile_share): every tile in exactly one share, with the
-  // mesh of the call with every tile; the shares balanced as the deal says (longest first: no
-  // share above the average by more than the largest tile).
-  std::size_t largest = 0, total = 0;
-  for(const LOC::Tile_report& t : r.tiles) {
-    largest = std::max(largest, t.number_of_points);
-    total += t.number_of_points;
-  }
+  // Dealt out to 2 and to 3 processes by tile_filter (round robin): every tile reconstructed
+  // by exactly one call, with the mesh of the call with every tile; the filter is called once,
+  // before any tile, with the number of points of each tile.
   for(std::size_t count : {2u, 3u}) {
     std::vector<int> times_made(tiles.size(), 0);
-    std::vector<std::size_t> load(count, 0);
     for(std::size_t index = 0; index < count; ++index) {
+      std::size_t filter_calls = 0, visited = 0;
+      auto filter = [&](const std::vector<std::size_t>& points_per_tile) {
+        ++filter_calls;
+        assert(visited == 0 && points_per_tile.size() == tiles.size());
+        std::vector<bool> keep(points_per_tile.size());
+        for(std::size_t t = 0; t < keep.size(); ++t) {
+          assert(points_per_tile[t] == r.tiles[t].number_of_points);
+          keep[t] = t % count == index;
+        }
+        return keep;
+      };
       std::vector<Mesh> part;
       const LOC::Tiled_surface_report s = CGAL::lex_optimal_tiled_surface_reconstruction(
-        points, 34, part, LOC::parameters::tile_share(LOC::Tile_share{index, count}));
-      assert(part.size() == tiles.size() && s.share.index == index && s.share.count == count);
+        points, 34, part,
+        LOC::parameters::tile_filter(filter, LOC::parameters::tile_visitor([&](const LOC::Tile_report&, Mesh&) { ++visited; })));
+      assert(filter_calls == 1 && part.size() == tiles.size());
       for(std::size_t t = 0; t < tiles.size(); ++t) {
-        assert(s.tiles[t].reconstructed == (s.tiles[t].share == index));
+        assert(s.tiles[t].reconstructed == (t % count == index));
         if(!s.tiles[t].reconstructed) {
           assert(part[t].is_empty() && s.tiles[t].mesh_faces == 0 && s.tiles[t].number_of_points == 0);
           continue;
         }
         assert(s.tiles[t].number_of_points == r.tiles[t].number_of_points);
         ++times_made[t];
-        load[index] += s.tiles[t].number_of_points;
         assert(triangles_of(part[t]) == triangles_of(tiles[t]));
       }
+      std::size_t kept = 0;
+      for(const LOC::Tile_report& t : s.tiles) kept += t.reconstructed ? 1 : 0;
+      assert(kept > 0 && visited == kept); // the visitor sees the kept tiles only
     }
     assert(std::count(times_made.begin(), times_made.end(), 1) == long(tiles.size()));
-    for(std::size_t l : load) assert(double(l) <= double(total) / double(count) + double(largest));
-    std::cout << "  dealt to " << count << " processes: every tile once, the same meshes, points per share";
-    for(std::size_t l : load) std::cout << " " << l;
-    std::cout << std::endl;
+    std::cout << "  dealt to " << count << " processes by the tile filter: every tile once, the same meshes" << std::endl;
   }
-
-  // the peak memory of each tile, measured when they run one at a time (Linux)
-  std::vector<Mesh> measured;
-  const LOC::Tiled_surface_report m = CGAL::lex_optimal_tiled_surface_reconstruction(
-    points, 34, measured, LOC::parameters::measure_tile_memory(true));
-#ifdef __linux__
-  for(const LOC::Tile_report& t : m.tiles) assert(t.peak_memory_bytes > 0 && t.peak_memory_bytes <= m.peak_memory_bytes);
-  std::cout << "  peak memory measured per tile: " << m.tiles[0].peak_memory_bytes / 1e6 << " MB for the first, "
-            << m.peak_memory_bytes / 1e6 << " MB over the call" << std::endl;
-#endif
-  const LOC::Tiled_surface_report unmeasured = CGAL::lex_optimal_tiled_surface_reconstruction(
-    points, 34, measured, LOC::parameters::measure_tile_memory(true, LOC::parameters::number_of_threads(2u)));
-  if(unmeasured.number_of_threads == 2) // tiles at once: the process's peak is not theirs
-    for(const LOC::Tile_report& t : unmeasured.tiles) assert(t.peak_memory_bytes == 0);
+  // a filter that keeps no tile: no error, every tile empty
+  std::vector<Mesh> none;
+  const LOC::Tiled_surface_report n = CGAL::lex_optimal_tiled_surface_reconstruction(
+    points, 34, none, LOC::parameters::tile_filter([](const std::vector<std::size_t>& p) { return std::vector<bool>(p.size(), false); }));
+  assert(none.size() == tiles.size());
+  for(std::size_t t = 0; t < tiles.size(); ++t) assert(!n.tiles[t].reconstructed && none[t].is_empty());
 }
 
 // A flat cloud (all heights 0, a parking lot): the frame is below it, so the tiles are not
@@ -325,10 +330,11 @@ void test_bad_input()
   for(const Point& p : points)
     if(std::abs(p.x() - 5) > 1 || std::abs(p.y() - 5) > 1) holed.push_back(p);
   expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(holed, 5., tiles); });
-  for(const LOC::Tile_share& share : {LOC::Tile_share{2, 2}, LOC::Tile_share{0, 0}})
-    expect_error(Code::INVALID_PARAMETER, [&] {
-      CGAL::lex_optimal_tiled_surface_reconstruction(points, 5., tiles, LOC::parameters::tile_share(share));
-    });
+  // a tile filter that does not return one value per tile
+  auto one_more = [](const std::vector<std::size_t>& p) { return std::vector<bool>(p.size() + 1, true); };
+  expect_error(Code::INVALID_PARAMETER, [&] {
+    CGAL::lex_optimal_tiled_surface_reconstruction(points, 5., tiles, LOC::parameters::tile_filter(one_more));
+  });
   expect_error(Code::EMPTY_INPUT, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(std::vector<Point>(), 5., tiles); });
   std::vector<Point> nan = points;
   nan[7] = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
@@ -344,6 +350,9 @@ void test_bad_input()
   expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 0., d, tiles); });
   expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 10., d, tiles); });
   expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(holed), 5., d, tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] {
+    CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 5., d, tiles, LOC::parameters::tile_filter(one_more));
+  });
   expect_error(Code::EMPTY_INPUT, [&] {
     const std::vector<Point> none;
     CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(none), 5., d, tiles);

@@ -9,6 +9,7 @@
 
 #include <CGAL/license/Lex_optimal_chains.h>
 
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/Closed_surface_report.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
@@ -95,6 +96,8 @@ swapped when `i` is odd, is oriented outward.
 \returns a report; only its triangulation, order and cut fields are filled.
 \throws Lex_optimal_chains::Input_error on a triangulation of dimension below 3, an interior
 point outside the convex hull, conflicting constraints, or when no interior can be chosen.
+\throws Lex_optimal_chains::Cancelled when the callback returns `false`; nothing is then
+written to `facets`.
 */
 template <class DT, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Closed_surface_report
@@ -146,6 +149,7 @@ what is left non-manifold is split as described there.
 
 \returns a report; its triangulation, order, cut, resolution and mesh fields are filled.
 \throws Lex_optimal_chains::Input_error as `lex_optimal_closed_surface()`.
+\throws Lex_optimal_chains::Cancelled when the callback returns `false`; `mesh` is then unchanged.
 */
 template <class DT, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Closed_surface_report
@@ -218,6 +222,7 @@ a vertex, as for an infinitesimally shrunk union; their numbers are reported.
 4 distinct points, coplanar points, `robust` without Eigen, `smoothing_neighbors` from 1 to 7,
 and the errors of
 `lex_optimal_closed_surface()`.
+\throws Lex_optimal_chains::Cancelled when the callback returns `false`; `mesh` is then unchanged.
 */
 template <class PointRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Closed_surface_report
@@ -233,8 +238,6 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
     CGAL::internal_np::geom_traits_t, NamedParameters, Kernel>::type;
   static_assert(Lex_optimal_chains::internal::Has_exact_predicates_and_double_coordinates<Geom_traits>::value, "");
   const Geom_traits traits = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  using Input_error = Lex_optimal_chains::Input_error;
-  using Code = Lex_optimal_chains::Input_error_code;
 
   const Point_map point_map = choose_parameter<Point_map>(get_parameter(np, CGAL::internal_np::point_map));
   const std::function<bool(double)> callback =
@@ -245,7 +248,7 @@ lex_optimal_closed_surface_reconstruction(const PointRange& points, PolygonMesh&
   Lex_optimal_chains::internal::Stopwatch total, watch;
   std::vector<Point> pts = Lex_optimal_chains::internal::finite_points<Point>(points, point_map);
   report.number_of_input_points = pts.size();
-  if(callback && !callback(0.0)) throw Input_error(Code::CANCELLED, "cancelled by the callback");
+  Lex_optimal_chains::internal::report_progress(callback, 0.0);
   if(choose_parameter(get_parameter(np, Lex_optimal_chains::internal_np::robust), false)) {
     watch.lap(); // reading the points is not smoothing
     const Lex_optimal_chains::internal::Noise_smoothing_result s = Lex_optimal_chains::internal::smooth_noisy_points(

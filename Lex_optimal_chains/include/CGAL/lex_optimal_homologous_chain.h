@@ -10,6 +10,7 @@
 
 #include <CGAL/license/Lex_optimal_chains.h>
 
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/Open_surface_report.h>
 #include <CGAL/Lex_optimal_chains/parameters.h>
 #include <CGAL/Lex_optimal_chains/internal/Optimal_chain_3.h>
@@ -78,7 +79,9 @@ twice has the sum of its coefficients
 \throws Lex_optimal_chains::Input_error on a triangulation of dimension below 3, or a facet
 with the infinite vertex in `chain` or in \f$B\f$ (`INVALID_CHAIN`); with code `TOO_LARGE`
 when an intersection product exceeds 32 bits (see `Lex_optimal_chains::Coefficient_field`) or
-the triangulation has \f$2^{30}\f$ cells or more; `CANCELLED` when the callback cancels.
+the triangulation has \f$2^{30}\f$ cells or more.
+\throws Lex_optimal_chains::Cancelled when the callback returns `false` (the output iterator
+may then have been written: the last call, with 1, comes after it).
 */
 template <class DT, class ChainRange, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Open_surface_report
@@ -116,7 +119,9 @@ orientation
 \throws Lex_optimal_chains::Input_error with code `BOUNDARY_EDGE_NOT_IN_TRIANGULATION` if an
 edge of `cycle` is not a finite edge of `dt` (the message gives its vertices),
 `BOUNDARY_NOT_A_CYCLE` if the edges do not form a cycle, and the errors of
-`lex_optimal_homologous_chain()` (`TOO_LARGE`, `CANCELLED`).
+`lex_optimal_homologous_chain()` (`TOO_LARGE`).
+\throws Lex_optimal_chains::Cancelled when the callback returns `false`, as
+`lex_optimal_homologous_chain()`.
 */
 template <class DT, class EdgeRange, class OutputIterator, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Open_surface_report

@@ -10,6 +10,7 @@
 #include <CGAL/license/Lex_optimal_chains.h>
 
 #include <CGAL/lex_optimal_homologous_chain.h>
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/Coefficient_field.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/Open_surface_report.h>
@@ -108,7 +109,8 @@ starts), `SELF_INTERSECTING_BOUNDARY` (a repeated vertex, segments that meet),
 `BOUNDARY_FAR_FROM_POINTS` (a polyline farther from the bounding box of the points than its
 diagonal), `BOUNDARY_EDGE_NOT_IN_TRIANGULATION` (the message names the edge), `EMPTY_RESULT`
 (with `drop_boundary_triangles`, when every triangle is dropped: a vertical wall, a few
-points, no terrain) or `CANCELLED`.
+points, no terrain). `mesh` is then unchanged.
+\throws Lex_optimal_chains::Cancelled when the callback returns `false`; `mesh` is then unchanged.
 */
 template <class PointRange, class PolylineRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Open_surface_report
@@ -139,7 +141,7 @@ lex_optimal_open_surface_reconstruction(const PointRange& points, const Polyline
   std::vector<Point> pts = LOC::internal::finite_points<Point>(points, point_map);
   report.number_of_input_points = pts.size();
   const auto boundary = LOC::internal::checked_polylines<Kernel>(polylines, bbox_3(pts.begin(), pts.end()));
-  if(callback && !callback(0.0)) throw LOC::Input_error(LOC::Input_error_code::CANCELLED, "cancelled by the callback");
+  LOC::internal::report_progress(callback, 0.0);
 
   std::vector<Point> soup_points;
   std::vector<std::array<std::uint32_t, 3>> soup;
@@ -196,6 +198,7 @@ and `keep_non_manifold` (see `lex_optimal_open_surface_reconstruction()`)
 \returns a report; its triangulation, representative, order, optimal chain, resolution and
 mesh fields are filled.
 \throws Lex_optimal_chains::Input_error as `lex_optimal_chain_with_boundary()`.
+\throws Lex_optimal_chains::Cancelled when the callback returns `false`; `mesh` is then unchanged.
 */
 template <class DT, class EdgeRange, class PolygonMesh, class NamedParameters = parameters::Default_named_parameters>
 Lex_optimal_chains::Open_surface_report

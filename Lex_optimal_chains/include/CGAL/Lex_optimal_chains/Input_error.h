@@ -27,7 +27,6 @@ enum class Input_error_code
   NO_INTERIOR_FOUND,           ///< no interior point was given and none could be chosen
   TOO_LARGE,                   ///< the input exceeds a size limit (2^30 cells, 2^31 in an intersection product, simplex dimension, a footprint beyond the range of doubles)
   INVALID_GRAPH,               ///< a graph given to the generic min-cut is not valid
-  CANCELLED,                   ///< the progress callback asked to stop
   OPEN_POLYLINE,               ///< a boundary polyline does not end where it starts
   SELF_INTERSECTING_BOUNDARY,  ///< a boundary polyline repeats a vertex or crosses itself or another one
   BOUNDARY_EDGE_NOT_IN_TRIANGULATION, ///< a boundary edge is not an edge of the Delaunay triangulation

@@ -14,21 +14,6 @@ namespace Lex_optimal_chains {
 
 /*!
 \ingroup PkgLexOptimalChainsRef
-Which tiles a call of `lex_optimal_tiled_surface_reconstruction()` reconstructs when the tiles
-are dealt out to `count` processes (MPI ranks, machines): the share `index`. The tiles are
-dealt by decreasing number of points (then by tile index), each to the share with the fewest
-points so far (then the lowest index), so that the shares are balanced. Every process computes
-the same seams and the same deal from the same points, so the shares are disjoint, cover all
-tiles, and a tile's mesh does not depend on the share it falls in.
-*/
-struct Tile_share
-{
-  std::size_t index = 0; ///< this process's share, from 0 to `count` - 1
-  std::size_t count = 1; ///< number of shares (processes); 1: every tile
-};
-
-/*!
-\ingroup PkgLexOptimalChainsRef
 What `lex_optimal_tiled_surface_reconstruction()` did with one tile.
 */
 struct Tile_report
@@ -41,9 +26,7 @@ struct Tile_report
   std::size_t mesh_vertices = 0;    ///< vertices of its mesh
   std::size_t mesh_faces = 0;       ///< faces of its mesh
   double seconds = 0;               ///< time of its reconstruction
-  std::size_t share = 0;            ///< the share (`Tile_share::index`) the tile was dealt to
-  bool reconstructed = false;       ///< whether this call reconstructed it (it is in the call's share); if not, its mesh is empty and the counts of its mesh 0
-  std::size_t peak_memory_bytes = 0; ///< with `measure_tile_memory`: the peak resident size of the process while the tile was reconstructed (0: not measured)
+  bool reconstructed = false;       ///< whether this call reconstructed it (`tile_filter` kept it); if not, its mesh is empty and the counts of its mesh 0
 };
 
 /*!
@@ -60,12 +43,10 @@ struct Tiled_surface_report
   double seam_spacing = 0;                ///< spacing of the seam points used
   std::size_t number_of_seam_points = 0;  ///< input points on the seams
   std::size_t number_of_threads = 0;      ///< threads used for the tiles
-  Tile_share share;                       ///< the share of the tiles this call reconstructed
   std::vector<Tile_report> tiles;         ///< per tile, row after row
   double seam_seconds = 0;                ///< time to compute the seams and sort the points into tiles
   double tiles_seconds = 0;               ///< time to reconstruct the tiles
   double total_seconds = 0;               ///< time of the whole call
-  std::size_t peak_memory_bytes = 0;      ///< with `measure_tile_memory`: the peak resident size of the process over the call, the visitor's work included (0: not measured)
 };
 
 /*!

@@ -29,8 +29,7 @@ enum robust_t { robust };
 enum smoothing_neighbors_t { smoothing_neighbors };
 enum seam_spacing_t { seam_spacing };
 enum tile_visitor_t { tile_visitor };
-enum tile_share_t { tile_share };
-enum measure_tile_memory_t { measure_tile_memory };
+enum tile_filter_t { tile_filter };
 enum feature_points_t { feature_points };
 enum feature_threshold_t { feature_threshold };
 enum vcm_offset_radius_t { vcm_offset_radius };
@@ -89,11 +88,9 @@ CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(smoothing_neighbors)
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(seam_spacing)
 /// Called with each tile of `lex_optimal_tiled_surface_reconstruction()` as soon as it is reconstructed (to write it and free it).
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_visitor)
-/// The share (a `Tile_share`) of the tiles of `lex_optimal_tiled_surface_reconstruction()` that
-/// this call reconstructs, when the tiles are dealt out to several processes.
-CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_share)
-/// Measures the peak resident memory of the process during each tile of `lex_optimal_tiled_surface_reconstruction()` (Linux).
-CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(measure_tile_memory)
+/// Which tiles of `lex_optimal_tiled_surface_reconstruction()` to reconstruct: a callable
+/// `std::vector<bool>(const std::vector<std::size_t>& points_per_tile)`, called once before any tile.
+CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(tile_filter)
 /// The feature set \f$S\f$ of `lex_optimal_feature_reconstruction()` (a range of `Point_3`).
 CGAL_LEX_OPTIMAL_CHAINS_PARAMETER(feature_points)
 /// The threshold of the VCM feature estimate of `lex_optimal_feature_reconstruction()`.

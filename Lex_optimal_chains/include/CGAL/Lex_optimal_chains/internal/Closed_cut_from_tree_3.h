@@ -4,7 +4,7 @@
 #ifndef CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_CUT_FROM_TREE_3_H
 #define CGAL_LEX_OPTIMAL_CHAINS_INTERNAL_CLOSED_CUT_FROM_TREE_3_H
 
-#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_cut_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Dense_numbers.h>
 #include <CGAL/Lex_optimal_chains/internal/Sorted_dual_graph_3.h>
@@ -76,7 +76,7 @@ private:
   template <class Progress>
   static void check(const Progress& progress, double value)
   {
-    if(!progress(value)) throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+    if(!progress(value)) throw Cancelled();
   }
 
   // the component of a cell in one read (the contraction's sets are flat), and its number

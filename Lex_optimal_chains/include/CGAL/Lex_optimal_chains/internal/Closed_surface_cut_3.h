@@ -19,6 +19,7 @@
 // components are sorted and processed. On points sampled from a surface this leaves 18% of
 // the facets, and the contraction gives nearly all of the spanning tree.
 
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Dense_numbers.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
@@ -289,7 +290,7 @@ Dual_edge_records lexicographic_closed_cut(Contracted_dual_graph_3<Triangulation
   const std::size_t m = records.size();
   for(std::size_t t = 0; t < m; ++t) {
     if((t & 0xfffff) == 0 && !progress(double(t) / double(m)))
-      throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+      throw Cancelled();
     if(t + 16 < m) {
       const auto& next = records[m - 1 - t - 16];
       sets.prefetch(Graph::owner_position(next));

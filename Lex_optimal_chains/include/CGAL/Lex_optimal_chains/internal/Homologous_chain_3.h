@@ -19,7 +19,7 @@
 // finite ones and carry no coefficient of Gamma0 (which is finite), so Algorithm 10 would
 // unite them first with zero values; they start as one set.
 
-#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/internal/Augmented_union_find.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Largest_facets_3.h>
@@ -139,7 +139,7 @@ Dual_edge_records lexicographic_homologous_chain(Graph& graph, Augmented_union_f
   constexpr std::size_t ahead = 16;
   for(std::size_t t = 0; t < m; ++t) {
     if((t & 0xfffff) == 0 && !progress(double(t) / double(m)))
-      throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+      throw Cancelled();
     if(t + ahead < m) {
       const auto& next = records[m - 1 - t - ahead];
       sets.prefetch(Graph::owner_position(next));

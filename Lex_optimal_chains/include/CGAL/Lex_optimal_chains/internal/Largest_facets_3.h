@@ -25,7 +25,7 @@
 // same R_B (the common case of a near tie: the two facets around the longest edge of a flat
 // cell) and are compared by R_C.
 
-#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
 #include <CGAL/Lex_optimal_chains/internal/Prefetch.h>
@@ -363,7 +363,7 @@ std::size_t for_each_cell_across_largest_facet(const Triangulation& dt,
       ++ahead;
     }
     if((pos & 0xfffff) == 0 && !progress(double(pos) / double(cells.size())))
-      throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+      throw Cancelled();
     const auto& c = *it;
     if(terminal[pos] || c.has_vertex(infinite)) {
       found(pos, pos);

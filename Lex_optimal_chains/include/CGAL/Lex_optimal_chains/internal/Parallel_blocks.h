@@ -12,7 +12,7 @@
 // one thread, or for loops too short to pay the start of the threads, the blocks run in order
 // on the calling thread.
 
-#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -82,7 +82,7 @@ public:
 
   // Runs `body` over [0, n) as `run()` does, in waves of `wave` items: before each wave,
   // `progress(fraction done)` is called from the calling thread (it returns false to cancel:
-  // Input_error CANCELLED is thrown), and after each wave `wave_done(first block, number of
+  // Cancelled is thrown), and after each wave `wave_done(first block, number of
   // blocks)`, also from the calling thread (blocks are numbered from 0 across the waves).
   template <class Body, class WaveDone, class Progress>
   void run_in_waves(std::size_t n, std::size_t block, std::size_t wave, const Progress& progress, const Body& body,
@@ -90,7 +90,7 @@ public:
   {
     wave = (std::max)(block, wave - wave % block);
     for(std::size_t begin = 0; begin < n; begin += wave) {
-      if(!progress(double(begin) / double(n))) throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+      if(!progress(double(begin) / double(n))) throw Cancelled();
       const std::size_t end = (std::min)(n, begin + wave), first_block = begin / block;
       run(begin, end, block, n, [&](std::size_t b, std::size_t first, std::size_t last) { body(first_block + b, first, last); });
       wave_done(first_block, number_of_blocks(begin, end, block));

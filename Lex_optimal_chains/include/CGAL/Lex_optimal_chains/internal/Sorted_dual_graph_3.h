@@ -24,6 +24,7 @@
 // the components left by the contraction of internal/Largest_facets_3.h): the keys of the
 // other facets are then not even computed.
 
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/internal/Handle_index_map.h>
 #include <CGAL/Lex_optimal_chains/internal/Large_array_allocator.h>
@@ -285,7 +286,7 @@ private:
         ++ahead;
       }
       if((pos & 0xfffff) == 0 && !progress(0.5 * double(pos) / double(cells_.size())))
-        throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+        throw Cancelled();
       add_records_of_cell(*it, pos, keep, records_, [this](std::uint32_t owner, std::uint64_t upper) {
         uncertain_upper_.emplace(owner, upper);
       });
@@ -546,7 +547,7 @@ private:
   void sort_records(const Progress& progress, unsigned threads)
   {
     if(!progress(0.5))
-      throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+      throw Cancelled();
     if(records_.empty()) return;
     std::uint64_t lo = records_.front().key, hi = lo;
     for(const Record& r : records_) { lo = (std::min)(lo, r.key); hi = (std::max)(hi, r.key); }
@@ -558,7 +559,7 @@ private:
     radix_sort_records(records_.data(), records_.data() + records_.size(), (std::max)(top - width + 1, 0),
                        dropped_bits, width, &parallel);
     if(!progress(0.8))
-      throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+      throw Cancelled();
 
     // runs that the keys cannot order: first found in one sequential sweep...
     const auto repair_start = std::chrono::steady_clock::now();

@@ -6,7 +6,7 @@
 
 // Stage timings and the mapping of a stage's progress to the user's callback.
 
-#include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/Cancelled.h>
 
 #include <chrono>
 #include <functional>
@@ -32,10 +32,10 @@ private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// Reports `progress` to the callback, if there is one; throws CANCELLED when it returns false.
+// Reports `progress` to the callback, if there is one; throws Cancelled when it returns false.
 inline void report_progress(const std::function<bool(double)>& callback, double progress)
 {
-  if(callback && !callback(progress)) throw Input_error(Input_error_code::CANCELLED, "cancelled by the callback");
+  if(callback && !callback(progress)) throw Cancelled();
 }
 
 // Maps the progress of one stage to [from, to] of the user's callback.

@@ -7,7 +7,8 @@
 // What the two tiled reconstructions (points in memory, points streamed into bucket files)
 // share: the settings read from the named parameters, the size of the tiles and the spacing
 // of the seams from the bounding box and the number of distinct points, and the loop that
-// reconstructs the tiles of a share once the seams are known, whatever holds their points.
+// reconstructs the tiles that the tile filter keeps once the seams are known, whatever holds
+// their points.
 
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/Input_error.h>
@@ -15,10 +16,8 @@
 #include <CGAL/Lex_optimal_chains/parameters.h>
 #include <CGAL/Lex_optimal_chains/internal/Optimal_chain_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Parallel_blocks.h>
-#include <CGAL/Lex_optimal_chains/internal/Peak_memory.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 #include <CGAL/Lex_optimal_chains/internal/Tile_seams_3.h>
-#include <CGAL/Lex_optimal_chains/internal/Tile_shares.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Named_function_parameters.h>
@@ -30,6 +29,7 @@
 #include <iomanip>
 #include <mutex>
 #include <new>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -47,8 +47,7 @@ struct Tile_settings
   Coefficient_field field = Coefficient_field::Z2;
   bool keep_non_manifold = false;
   double seam_spacing = 0; // 0: from the data
-  Tile_share share;
-  bool measure_memory = false;
+  std::function<std::vector<bool>(const std::vector<std::size_t>&)> filter; // empty: every tile
   std::function<void(const Tile_report&, PolygonMesh&)> visitor;
 };
 
@@ -62,12 +61,8 @@ Tile_settings<PolygonMesh> tile_settings(const NamedParameters& np)
   s.field = coefficient_field_of(np);
   s.keep_non_manifold = choose_parameter(get_parameter(np, internal_np::keep_non_manifold), false);
   s.seam_spacing = choose_parameter(get_parameter(np, internal_np::seam_spacing), 0.);
-  s.share = choose_parameter(get_parameter(np, internal_np::tile_share), Tile_share());
-  if(s.share.count == 0 || s.share.index >= s.share.count)
-    throw Input_error(Input_error_code::INVALID_PARAMETER,
-                      "the tile share " + std::to_string(s.share.index) + " of " + std::to_string(s.share.count) +
-                        " does not exist (shares 0 to count - 1, count at least 1)");
-  s.measure_memory = choose_parameter(get_parameter(np, internal_np::measure_tile_memory), false);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::tile_filter_t>::value)
+    s.filter = get_parameter(np, internal_np::tile_filter);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::tile_visitor_t>::value)
     s.visitor = get_parameter(np, internal_np::tile_visitor);
   return s;
@@ -129,38 +124,51 @@ void append_cycle_seam_points(const Tile_seams_3<Point>& seams, const std::vecto
     if(seams.is_seam_point(cycle[k])) points.push_back(cycle[k]);
 }
 
-// Reconstructs the tiles of the share of `s` (dealt by `cost`, one number per tile), each on
-// one thread, into `meshes` and `report.tiles`. `points_of(t)` gives the points of tile t
+// The tiles to reconstruct, increasing: those that `filter` keeps (called once with the number
+// of points of each tile), every tile without a filter.
+inline std::vector<std::size_t> kept_tiles(const std::function<std::vector<bool>(const std::vector<std::size_t>&)>& filter,
+                                           const std::vector<std::size_t>& points_per_tile)
+{
+  std::vector<std::size_t> kept;
+  if(!filter) {
+    kept.resize(points_per_tile.size());
+    std::iota(kept.begin(), kept.end(), std::size_t(0));
+    return kept;
+  }
+  const std::vector<bool> keep = filter(points_per_tile);
+  if(keep.size() != points_per_tile.size())
+    throw Input_error(Input_error_code::INVALID_PARAMETER,
+                      "tile_filter returned " + std::to_string(keep.size()) + " values for " +
+                        std::to_string(points_per_tile.size()) + " tiles: it must return one per tile");
+  for(std::size_t t = 0; t < keep.size(); ++t)
+    if(keep[t]) kept.push_back(t);
+  return kept;
+}
+
+// Reconstructs the tiles that the filter of `s` keeps (called with `points_per_tile`), each
+// on one thread, into `meshes` and `report.tiles`. `points_of(t)` gives the points of tile t
 // (its region's, sorted, then its cycle's seam points); it is called once per tile, from the
 // thread of the tile. The first error in the order of the tiles is thrown, naming its tile.
 template <class Point, class PolygonMesh, class PointsOf>
 void reconstruct_tiles(const Tile_seams_3<Point>& seams, const std::vector<std::vector<Point>>& cycles,
-                       const std::vector<std::size_t>& cost, const PointsOf& points_of,
+                       const std::vector<std::size_t>& points_per_tile, const PointsOf& points_of,
                        const Tile_settings<PolygonMesh>& s, std::vector<PolygonMesh>& meshes, Tiled_surface_report& report)
 {
-  const std::vector<std::size_t> share_of = deal_tiles(cost, s.share.count);
-  std::vector<std::size_t> mine;
-  for(std::size_t t = 0; t < share_of.size(); ++t)
-    if(share_of[t] == s.share.index) mine.push_back(t);
+  const std::vector<std::size_t> mine = kept_tiles(s.filter, points_per_tile);
   meshes.assign(seams.number_of_tiles(), PolygonMesh());
   std::vector<Tile_report> tiles(seams.number_of_tiles());
   for(std::size_t t = 0; t < tiles.size(); ++t) {
     tiles[t].column = t % seams.columns();
     tiles[t].row = t / seams.columns();
     tiles[t].number_of_cycle_vertices = cycles[t].size() - 1;
-    tiles[t].share = share_of[t];
   }
   std::vector<std::exception_ptr> errors(seams.number_of_tiles());
   std::mutex visitor_mutex;
   Parallel_blocks parallel(s.threads, 2);
   report.number_of_threads = parallel.is_parallel(mine.size()) ? s.threads : 1;
-  // the peak of each tile: only when they run one at a time (the peak is the process's)
-  const bool measure = s.measure_memory && !parallel.is_parallel(mine.size()) && peak_resident_bytes() > 0;
-  if(measure) report.peak_memory_bytes = (std::max)(report.peak_memory_bytes, peak_resident_bytes());
   parallel.run(0, mine.size(), 1, mine.size(), [&](std::size_t m, std::size_t, std::size_t) {
     const std::size_t t = mine[m];
     Stopwatch tile_watch;
-    const bool measured = measure && reset_peak_resident_bytes();
     Tile_report& r = tiles[t];
     try {
       {
@@ -177,16 +185,10 @@ void reconstruct_tiles(const Tile_seams_3<Point>& seams, const std::vector<std::
         r.mesh_faces = open.mesh_faces;
       }
       r.seconds = tile_watch.lap();
-      if(measured) {
-        r.peak_memory_bytes = peak_resident_bytes();
-        report.peak_memory_bytes = (std::max)(report.peak_memory_bytes, r.peak_memory_bytes);
-      }
       if(s.visitor) {
         std::lock_guard<std::mutex> lock(visitor_mutex);
         s.visitor(r, meshes[t]);
       }
-      if(measured) // the visitor's work (writing the tile) counts for the call, not for the tile
-        report.peak_memory_bytes = (std::max)(report.peak_memory_bytes, peak_resident_bytes());
     } catch(...) {
       errors[t] = std::current_exception();
     }
