@@ -46,7 +46,6 @@
 #include <exception>
 #include <fstream>
 #include <iostream>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -347,21 +346,6 @@ static void settle_errors(const Process_group& group, const std::exception_ptr& 
   throw Reported_by_another_rank();
 }
 
-// The rank of each building (given by increasing id): by decreasing number of points (then by
-// increasing id), each to the rank with the fewest points so far (then the lowest rank). Every
-// rank splits the tile alike, hence makes the same deal.
-static std::vector<std::size_t> deal_buildings(const std::vector<std::size_t>& points, std::size_t ranks)
-{
-  std::vector<std::size_t> order(points.size()), rank_of(points.size(), 0), load(ranks, 0);
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return points[a] > points[b]; });
-  for(std::size_t b : order) {
-    const std::size_t r = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
-    rank_of[b] = r;
-    load[r] += points[b];
-  }
-  return rank_of;
-}
 
 // What one rank makes of a tile: the deal of all its buildings, and the buildings of this rank
 struct City_share
@@ -379,7 +363,7 @@ static City_share model_share(const Tile& tile, const std::vector<Polygon_with_h
   City_share share;
   auto mine = [&share, &group](const std::vector<std::size_t>& ids, const std::vector<std::size_t>& points) {
     share.ids = ids;
-    share.ranks = deal_buildings(points, group.size());
+    share.ranks = group.deal(points); // the same deal on every rank: by points, largest first
     std::vector<bool> keep(ids.size());
     for(std::size_t b = 0; b < ids.size(); ++b) keep[b] = share.ranks[b] == group.rank();
     return keep;

@@ -9,15 +9,13 @@
 #include <CGAL/Polygon_partition_simplification/City_building.h>
 #include <CGAL/Polygon_partition_simplification/internal/CityJSON_buildings.h>
 #include <CGAL/Polygon_partition_simplification/internal/CityJSON_model.h>
+#include <CGAL/Polygon_partition_simplification/internal/write_text_file.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <filesystem>
-#include <fstream>
 #include <ostream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace CGAL {
@@ -90,17 +88,7 @@ bool write_CityJSON(const std::string& file_name, const Surface_mesh<Point>& mes
 {
   const std::string text =
     internal::CityJSON_text(internal::make_CityJSON_model(mesh, internal::CityJSON_decimals(np)));
-  std::ofstream out(file_name, std::ios::binary);
-  if(!out)
-    return false;
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if(!out) {
-    std::error_code error;
-    std::filesystem::remove(file_name, error);
-    return false;
-  }
-  return true;
+  return internal::write_text_file(file_name, text);
 }
 
 /*!
@@ -116,7 +104,16 @@ vertices are shared by all buildings and written as integers, as by the writer o
 
 \param os the output stream
 \param buildings the buildings
-\param np optional named parameters: `stream_precision` (the number of decimals, 3 by default)
+\param np optional named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{stream_precision}
+    \cgalParamDescription{the number of decimals of the coordinates, from 0 to 15}
+    \cgalParamType{`int`}
+    \cgalParamDefault{3}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
 \returns `true` if the stream is good after writing
 \throws Input_error, and writes nothing, on a non-finite vertex or an invalid `stream_precision`
 */
@@ -124,16 +121,7 @@ template <class Point, class NamedParameters = CGAL::parameters::Default_named_p
 bool write_CityJSON(std::ostream& os, const std::vector<City_building<Point>>& buildings,
                     const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const internal::CityJSON_transform t = internal::CityJSON_transform_of(buildings, internal::CityJSON_decimals(np));
-  internal::CityJSON_vertex_pool pool;
-  std::string text = internal::CityJSON_header(t) + "\n\"CityObjects\":{";
-  for(std::size_t b = 0; b < buildings.size(); ++b) {
-    text += b ? ",\n" : "\n";
-    internal::append_CityJSON_building(text, buildings[b], t, pool);
-  }
-  text += "\n},\n";
-  internal::append_CityJSON_vertices(text, pool, "\n");
-  text += "\n]}\n";
+  const std::string text = internal::CityJSON_text_of_buildings(buildings, internal::CityJSON_decimals(np));
   os.write(text.data(), static_cast<std::streamsize>(text.size()));
   return os.good();
 }
@@ -149,7 +137,8 @@ vertices; each line is written when it is made, so that large tiles stream.
 
 \param os the output stream
 \param buildings the buildings
-\param np optional named parameters: `stream_precision` (the number of decimals, 3 by default)
+\param np optional named parameters: those of `write_CityJSON()` for buildings (`stream_precision`)
+
 \returns `true` if the stream is good after writing
 \throws Input_error, and writes nothing, on a non-finite vertex or an invalid `stream_precision`
 */
@@ -157,21 +146,7 @@ template <class Point, class NamedParameters = CGAL::parameters::Default_named_p
 bool write_CityJSON_sequence(std::ostream& os, const std::vector<City_building<Point>>& buildings,
                              const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const internal::CityJSON_transform t = internal::CityJSON_transform_of(buildings, internal::CityJSON_decimals(np));
-  std::string line = internal::CityJSON_header(t) + "\"CityObjects\":{},\"vertices\":[]}\n";
-  os.write(line.data(), static_cast<std::streamsize>(line.size()));
-  for(const auto& building : buildings) {
-    internal::CityJSON_vertex_pool pool;
-    line = "{\"type\":\"CityJSONFeature\",\"id\":";
-    internal::append_JSON_string(line, "building_" + std::to_string(building.id));
-    line += ",\"CityObjects\":{";
-    internal::append_CityJSON_building(line, building, t, pool);
-    line += "},";
-    internal::append_CityJSON_vertices(line, pool, "");
-    line += "]}\n";
-    os.write(line.data(), static_cast<std::streamsize>(line.size()));
-  }
-  return os.good();
+  return internal::write_CityJSON_features(os, buildings, internal::CityJSON_decimals(np));
 }
 
 } // namespace IO

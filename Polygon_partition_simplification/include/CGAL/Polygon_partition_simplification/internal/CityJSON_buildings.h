@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -178,6 +179,45 @@ inline std::string CityJSON_header(const CityJSON_transform& t)
   }
   out += "]},";
   return out;
+}
+
+/// the CityJSON text of `buildings`, their vertices shared by all and written as integers
+template <class Point>
+std::string CityJSON_text_of_buildings(const std::vector<City_building<Point>>& buildings, int decimals)
+{
+  const CityJSON_transform t = CityJSON_transform_of(buildings, decimals);
+  CityJSON_vertex_pool pool;
+  std::string text = CityJSON_header(t) + "\n\"CityObjects\":{";
+  for(std::size_t b = 0; b < buildings.size(); ++b) {
+    text += b ? ",\n" : "\n";
+    append_CityJSON_building(text, buildings[b], t, pool);
+  }
+  text += "\n},\n";
+  append_CityJSON_vertices(text, pool, "\n");
+  text += "\n]}\n";
+  return text;
+}
+
+/// writes `buildings` to `os` as CityJSON Text Sequences, a line at a time: the header, then a
+/// `CityJSONFeature` per building with its own vertices; whether `os` is good after writing
+template <class Point>
+bool write_CityJSON_features(std::ostream& os, const std::vector<City_building<Point>>& buildings, int decimals)
+{
+  const CityJSON_transform t = CityJSON_transform_of(buildings, decimals);
+  std::string line = CityJSON_header(t) + "\"CityObjects\":{},\"vertices\":[]}\n";
+  os.write(line.data(), static_cast<std::streamsize>(line.size()));
+  for(const auto& building : buildings) {
+    CityJSON_vertex_pool pool;
+    line = "{\"type\":\"CityJSONFeature\",\"id\":";
+    append_JSON_string(line, "building_" + std::to_string(building.id));
+    line += ",\"CityObjects\":{";
+    append_CityJSON_building(line, building, t, pool);
+    line += "},";
+    append_CityJSON_vertices(line, pool, "");
+    line += "]}\n";
+    os.write(line.data(), static_cast<std::streamsize>(line.size()));
+  }
+  return os.good();
 }
 
 } // namespace internal

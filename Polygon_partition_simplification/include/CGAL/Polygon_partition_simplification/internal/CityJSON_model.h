@@ -19,13 +19,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <ostream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 namespace CGAL {
