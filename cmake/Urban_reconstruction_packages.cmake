@@ -26,6 +26,9 @@ if(CCACHE_PROGRAM)
   set(CMAKE_CXX_COMPILER_LAUNCHER "${CMAKE_COMMAND}" -E env "CCACHE_BASEDIR=${urban_checkout}" "${CCACHE_PROGRAM}")
 endif()
 
+# shared with the folders configured on their own
+option(URBAN_WITH_MPI "Build lex_reconstruct_mpi and lod2_reconstruct_mpi (work dealt out to MPI ranks) when MPI is found" ON)
+
 # A test folder configured on its own (cmake -S test/<Pkg>), as CGAL's test suite does: the
 # tests are built and ctest runs them.
 if(NOT URBAN_TOP_LEVEL)

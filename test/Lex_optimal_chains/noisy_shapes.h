@@ -12,8 +12,19 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/version_macros.h>
+// the only difference of CGAL 5.5 and 6 that the tests of this package meet: the AABB traits
+// are renamed with a _3 in CGAL 6 (the old header is deprecated there)
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+#include <CGAL/AABB_traits_3.h>
+template <class GeomTraits, class Primitive>
+using Distance_tree_traits = CGAL::AABB_traits_3<GeomTraits, Primitive>;
+#else
+#include <CGAL/AABB_traits.h>
+template <class GeomTraits, class Primitive>
+using Distance_tree_traits = CGAL::AABB_traits<GeomTraits, Primitive>;
+#endif
 #include <CGAL/Random.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/jet_estimate_normals.h>
@@ -117,7 +128,7 @@ inline double area_weighted_mean_distance(const Mesh& mesh, const std::function<
 // the mean distance of `points` to the surface of `mesh`
 inline double mean_distance_to_mesh(const std::vector<Point>& points, const Mesh& mesh)
 {
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  using Tree = CGAL::AABB_tree<Distance_tree_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
   Tree tree(faces(mesh).first, faces(mesh).second, mesh);
   tree.accelerate_distance_queries();
   double sum = 0;
