@@ -1,0 +1,265 @@
+// lex_reconstruct: what the subcommands share. The mesh and point types, the options of the
+// output (threads, --keep-non-manifold, --ascii, --json), the mesh writer (a temporary file
+// renamed on success), the statistics of the JSON line, the progress bar and the one-line
+// error message.
+#ifndef URBAN_LEX_RECONSTRUCT_OPTIONS_AND_OUTPUT_H
+#define URBAN_LEX_RECONSTRUCT_OPTIONS_AND_OUTPUT_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Lex_optimal_chains/IO/input_files.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include <CLI/CLI.hpp>
+#include <boost/timer/progress_display.hpp>
+#include <nlohmann/json.hpp>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lex_reconstruct {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace LOC = CGAL::Lex_optimal_chains;
+
+// every error of the program: one line on stderr (the caller exits with code 1)
+inline void print_error(const std::string& message)
+{
+  std::cerr << "lex_reconstruct: error: " << message << std::endl;
+}
+
+inline double peak_rss_mb()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0; // kilobytes on Linux
+}
+
+inline Point parse_point(const std::string& text)
+{
+  std::istringstream in(text);
+  double c[3];
+  char sep1 = 0, sep2 = 0;
+  if(!(in >> c[0] >> sep1 >> c[1] >> sep2 >> c[2]) || sep1 != ',' || sep2 != ',' || !in.eof())
+    throw std::invalid_argument("'" + text + "' is not a point X,Y,Z");
+  return Point(c[0], c[1], c[2]);
+}
+
+inline std::string lower_extension(const std::string& path)
+{
+  std::string e = std::filesystem::path(path).extension().string();
+  for(char& ch : e) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  return e;
+}
+
+// the check of an option that takes a positive finite number
+inline CLI::Validator positive_number()
+{
+  return CLI::Validator(
+    [](std::string& text) {
+      const double v = std::strtod(text.c_str(), nullptr);
+      return std::isfinite(v) && v > 0 ? std::string() : "must be a positive finite number, not " + text;
+    },
+    "POSITIVE");
+}
+
+// components, border loops and genus of the written mesh (sum over the components of
+// (2 - chi - border loops) / 2)
+struct Mesh_topology
+{
+  std::size_t components = 0, border_edges = 0, border_loops = 0;
+  long genus = 0;
+};
+
+inline Mesh_topology topology(const Mesh& mesh)
+{
+  Mesh_topology t;
+  {
+    Mesh copy = mesh; // the component map is a property of the mesh
+    auto fcc = copy.add_property_map<Mesh::Face_index, std::size_t>("f:component").first;
+    t.components = CGAL::Polygon_mesh_processing::connected_components(copy, fcc);
+  }
+  std::vector<char> seen(mesh.number_of_halfedges(), 0);
+  for(Mesh::Halfedge_index h : mesh.halfedges()) {
+    if(!mesh.is_border(h)) continue;
+    ++t.border_edges;
+    if(seen[h]) continue;
+    ++t.border_loops;
+    for(Mesh::Halfedge_index g = h; !seen[g]; g = mesh.next(g)) seen[g] = 1;
+  }
+  const long chi = long(mesh.number_of_vertices()) - long(mesh.number_of_edges()) + long(mesh.number_of_faces());
+  t.genus = (2 * long(t.components) - chi - long(t.border_loops)) / 2;
+  return t;
+}
+
+struct Progress_bar
+{
+  std::unique_ptr<boost::timer::progress_display> bar;
+  Progress_bar() { if(isatty(STDERR_FILENO)) bar.reset(new boost::timer::progress_display(100, std::cerr)); }
+  std::function<bool(double)> callback()
+  {
+    return [this](double x) {
+      if(bar) {
+        const unsigned long target = (unsigned long)(x * 100);
+        while(bar->count() < target) ++(*bar);
+      }
+      return true;
+    };
+  }
+};
+
+// A triangle mesh as binary little-endian PLY, byte for byte what CGAL's writer gives but for
+// the comment line (double x y z per vertex, a uchar-counted int list per face, the corners
+// from the target of the face's half-edge), written through a buffer. CGAL's writer makes one
+// stream write per value, which is slow on millions of triangles (the manual, section
+// "Usage", gives the times).
+inline bool write_binary_ply(const std::string& path, const Mesh& mesh, const std::vector<std::int32_t>* face_element = nullptr)
+{
+  const std::uint16_t probe = 1;
+  char first_byte;
+  std::memcpy(&first_byte, &probe, 1);
+  if(first_byte != 1) return CGAL::IO::write_polygon_mesh(path, mesh, CGAL::parameters::use_binary_mode(true)); // big-endian
+  std::ofstream out(path, std::ios::binary);
+  out << "ply\nformat binary_little_endian 1.0\ncomment Generated by lex_reconstruct\nelement vertex "
+      << mesh.number_of_vertices() << "\nproperty double x\nproperty double y\nproperty double z\nelement face "
+      << mesh.number_of_faces() << "\nproperty list uchar int vertex_indices\n"
+      << (face_element ? "property int element\n" : "") << "end_header\n";
+  // the records go through a buffer of 1 MiB, written when full (a buffer of the whole file
+  // would be fresh memory: a page fault every 4 KiB)
+  std::vector<char> buffer(1 << 20);
+  std::size_t used = 0;
+  auto append = [&](const void* bytes, std::size_t size) {
+    if(used + size > buffer.size()) {
+      out.write(buffer.data(), std::streamsize(used));
+      used = 0;
+    }
+    std::memcpy(buffer.data() + used, bytes, size);
+    used += size;
+  };
+  std::vector<std::int32_t> index(mesh.num_vertices(), -1); // over the vertex range, removed ones included
+  std::int32_t next = 0;
+  for(const Mesh::Vertex_index v : mesh.vertices()) {
+    index[v] = next++;
+    const Point& p = mesh.point(v);
+    const double xyz[3] = {p.x(), p.y(), p.z()};
+    append(xyz, sizeof(xyz));
+  }
+  for(const Mesh::Face_index f : mesh.faces()) {
+    const Mesh::Halfedge_index h = mesh.halfedge(f);
+    if(mesh.next(mesh.next(mesh.next(h))) != h) return false; // not a triangle
+    char record[17];
+    record[0] = 3;
+    const std::int32_t corners[3] = {index[mesh.target(h)], index[mesh.target(mesh.next(h))], index[mesh.source(h)]};
+    std::memcpy(record + 1, corners, sizeof(corners));
+    if(face_element) std::memcpy(record + 13, &(*face_element)[f], sizeof(std::int32_t));
+    append(record, face_element ? 17 : 13);
+  }
+  out.write(buffer.data(), std::streamsize(used));
+  return bool(out.flush());
+}
+
+// The mesh is written under a temporary name with the same extension, renamed on success.
+class Output_file
+{
+public:
+  explicit Output_file(const std::string& output) : output_(output)
+  {
+    const std::filesystem::path out_path(output);
+    tmp_ = (out_path.parent_path() / ("." + out_path.stem().string() + ".partial" + out_path.extension().string())).string();
+    const std::string out_ext = lower_extension(output);
+    if(out_ext != ".off" && out_ext != ".ply" && out_ext != ".obj")
+      throw std::invalid_argument("output '" + output + "' must end in .off, .ply or .obj");
+    // checked before the reconstruction: the file is created (empty) and removed at the end
+    // unless it is written
+    if(!std::ofstream(tmp_))
+      throw std::runtime_error("cannot write '" + output + "' (no such directory, or no permission)");
+  }
+  ~Output_file() { std::error_code ignored; std::filesystem::remove(tmp_, ignored); }
+  // `face_element` (indexed by face): an int property `element` of the faces of a binary PLY file
+  void write(const Mesh& mesh, bool ascii, const std::vector<std::int32_t>* face_element = nullptr)
+  {
+    const bool written = !ascii && lower_extension(output_) == ".ply"
+                           ? write_binary_ply(tmp_, mesh, face_element)
+                           : CGAL::IO::write_polygon_mesh(tmp_, mesh, CGAL::parameters::stream_precision(17).use_binary_mode(!ascii));
+    if(!written)
+      throw std::runtime_error("cannot write '" + output_ + "'");
+    std::filesystem::rename(tmp_, output_);
+  }
+private:
+  std::string output_, tmp_;
+};
+
+// the options common to the subcommands closed, open and tiles
+struct Output_options
+{
+  unsigned threads = 1;
+  bool keep_non_manifold = false, ascii = false, json = false;
+};
+
+inline void add_output_options(CLI::App* command, Output_options& options)
+{
+  command->add_flag("--keep-non-manifold", options.keep_non_manifold,
+                    "keep the optimal chain as it is: its non-manifold vertices and edges are split in the mesh "
+                    "instead of resolved by local changes of the chain");
+  command->add_option("--threads", options.threads, "threads for the Delaunay triangulation (tiles: tiles reconstructed at once)")->check(CLI::Range(1u, 1024u));
+  command->add_flag("--ascii", options.ascii, "write a .ply mesh as text (binary by default)");
+  command->add_flag("--json", options.json, "print one JSON line of statistics on stdout");
+}
+
+inline void add_mesh_statistics(nlohmann::json& j, const Mesh& mesh)
+{
+  const Mesh_topology t = topology(mesh);
+  j["vertices"] = mesh.number_of_vertices();
+  j["faces"] = mesh.number_of_faces();
+  j["components"] = t.components;
+  j["boundary_edges"] = t.border_edges;
+  j["boundary_loops"] = t.border_loops;
+  j["closed"] = t.border_edges == 0 && mesh.number_of_faces() > 0;
+  j["genus"] = t.genus;
+}
+
+// the keys common to closed and open: the run, its shared timings, and the written mesh
+template <class Report>
+void add_common_statistics(nlohmann::json& j, const std::string& input, const std::string& output,
+                           const Report& r, double io_seconds, const Mesh& mesh)
+{
+  j["input"] = input;
+  j["output"] = output;
+  j["points"] = r.number_of_input_points;
+  j["delaunay_s"] = r.delaunay_seconds;
+  j["order_s"] = r.order_seconds;
+  j["resolution_s"] = r.resolution_seconds;
+  j["mesh_s"] = r.output_seconds;
+  j["write_s"] = io_seconds;
+  j["output_s"] = r.output_seconds + io_seconds;
+  j["total_s"] = r.total_seconds + io_seconds;
+  j["peak_rss_mb"] = peak_rss_mb();
+  add_mesh_statistics(j, mesh);
+  j["non_manifold_vertices"] = r.non_manifold_vertices;
+  j["non_manifold_edges"] = r.non_manifold_edges;
+  j["resolved_non_manifold_vertices"] = r.resolved_non_manifold_vertices;
+  j["resolution_changed_triangles"] = r.resolution_changed_facets;
+}
+
+} // namespace lex_reconstruct
+
+#endif // URBAN_LEX_RECONSTRUCT_OPTIONS_AND_OUTPUT_H
