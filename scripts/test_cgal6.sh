@@ -37,6 +37,16 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DCGAL_DIR=
 cgal="$(sed -n 's/^-- CGAL \([0-9][0-9.]*\): /\1 /p' "$build/configure.log" | tail -n1)"
 [ "${cgal%% *}" = "6.0.1" ] || fail "the build uses CGAL '${cgal:-?}', not 6.0.1 (CGAL_DIR=$cgal_dir)"
 
+# the labels of the tests to run: the test and/or example folders of the packages
+kinds=(${KINDS:-Tests Examples})
+labels=""
+for package in "${packages[@]}"; do
+  for kind in "${kinds[@]}"; do
+    case "$kind" in Tests|Examples) labels+="${package}_${kind}|" ;; *) fail "unknown kind '$kind' (Tests or Examples)" ;; esac
+  done
+done
+labels="^(${labels%|})$"
+
 # the tests, examples and programs of the packages: `all` of this configuration (no benchmark,
 # no demo), built in parallel (a list of targets would be built one after the other)
 [ -n "$(cd "$build" && ctest -N -L "$labels" | grep -m1 'compilation')" ] || fail "no compilation test labelled $labels in $build"
