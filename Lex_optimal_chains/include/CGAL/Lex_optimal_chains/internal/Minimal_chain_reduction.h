@@ -15,8 +15,11 @@
 #include <CGAL/Lex_optimal_chains/Simplicial_complex.h>
 #include <CGAL/Lex_optimal_chains/internal/Column_reduction.h>
 
+#include <CGAL/enum.h>
+
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>

@@ -19,6 +19,8 @@
 
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
+#include <CGAL/Cartesian_converter.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <cmath>
