@@ -4,11 +4,10 @@
 # which runs first when it is missing), fails on a compiler warning, then runs their tests with
 # ctest; prints the CGAL version the build uses.
 #   bash scripts/test_cgal6.sh BUILD_DIR [PACKAGE...] [-- CMAKE_OPTION...]
-# PACKAGE: Lex_optimal_chains, Polygon_partition_simplification (default: both). JOBS (default
-# 2) jobs build and test; the compiler goes through ccache when present (CCACHE_DISABLE=1: not).
-# KINDS (default "Tests Examples"): the test folders, the example folders or both; with Tests
-# only, the programs that the tests run are still built (ctest runs the compilations that the
-# tests require as fixtures).
+# The build is `all` of that configuration (both packages: tests, examples, programs); PACKAGE
+# (Lex_optimal_chains, Polygon_partition_simplification; default both) and KINDS choose the tests
+# that ctest runs. JOBS (default 2) jobs build and test; the compiler goes through ccache when present (CCACHE_DISABLE=1: not).
+# KINDS (default "Tests Examples"): the tests of the test folders, of the example folders, or both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
