@@ -20,12 +20,16 @@
 //   multiples of the step outwards and inwards, at the point's height; a wall that carries no
 //   roof gives none; across a courtyard narrower than the walls are high, the outside of each
 //   wing's facade is the courtyard although the other wing's roof is within reach.
+// - internal::replace_outlines_by_footprint, on a square footprint and hand-made segments: the
+//   outline pieces along its edges and the short ones cutting its corners are replaced by its
+//   edges; a ridge, an outline piece inside it and a short one far from its boundary stay.
 // the package's headers first: they read Boost's graph headers with g++'s false positives
 // silenced (internal/CGAL_compatibility.h), before CGAL 6's triangulate_faces.h reads them
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/footprint_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -789,6 +793,46 @@ void test_facade_evidence_across_a_courtyard()
 
 } // namespace facade_evidence
 
+// ---------------------------------------------------------------------------------------------
+// A square footprint of 20 m, a facade distance of 1 m: which segments it replaces.
+void test_footprint_replaces_outlines()
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Segment = PPS::Building_segment_2<K>;
+  auto piece = [](double x0, double y0, double x1, double y1, bool facade, std::size_t first, std::size_t second) {
+    Segment s;
+    s.segment = K::Segment_2(K::Point_2(x0, y0), K::Point_2(x1, y1));
+    s.is_facade = facade;
+    s.first_plane = first;
+    s.second_plane = second;
+    return s;
+  };
+  const std::vector<Segment> kept{
+    piece(2, 10, 18, 10, false, 1, 2),   // a ridge between two roof planes
+    piece(5, 4, 15, 4, true, 1, 1),      // an outline piece inside (a step of the roof)
+    piece(9, 9, 10, 10.2, true, 2, 2),   // short, far from the boundary
+    piece(0.5, 3, 0.5, 17, true, 3, 1)}; // along an edge, but a wall plane meeting a roof plane
+  const std::vector<Segment> replaced{
+    piece(19.6, 2, 19.4, 18, true, 1, 1), // along the edge x = 20, 0.5 m inside
+    piece(18.9, 0.3, 19.7, 1.2, true, 2, 2)}; // cuts the corner (20, 0)
+  std::vector<Segment> segments = kept;
+  segments.insert(segments.end(), replaced.begin(), replaced.end());
+  const std::vector<std::vector<std::array<double, 2>>> square{{{{0, 0}}, {{20, 0}}, {{20, 20}}, {{0, 20}}}};
+  PPS::internal::replace_outlines_by_footprint(square, 1., segments);
+  assert(segments.size() == kept.size() + 4);
+  for(std::size_t i = 0; i < kept.size(); ++i) assert(segments[i].segment == kept[i].segment);
+  for(std::size_t k = 0; k < 4; ++k) {
+    const Segment& edge = segments[kept.size() + k];
+    assert(edge.is_facade);
+    assert(edge.segment.source() == K::Point_2(square[0][k][0], square[0][k][1]));
+    assert(edge.segment.target() == K::Point_2(square[0][(k + 1) % 4][0], square[0][(k + 1) % 4][1]));
+  }
+  // no footprint: nothing changes
+  std::vector<Segment> unchanged = kept;
+  PPS::internal::replace_outlines_by_footprint({}, 1., unchanged);
+  assert(unchanged.size() == kept.size());
+}
+
 int main()
 {
   test_alpha_expansion_against_brute_force();
@@ -798,6 +842,7 @@ int main()
   test_CityJSON();
   facade_evidence::test_facade_evidence();
   facade_evidence::test_facade_evidence_across_a_courtyard();
+  test_footprint_replaces_outlines();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;
 }

@@ -203,9 +203,10 @@ void test_city_with_footprints()
   const T::Two_way_distances d = distances_to_truth(buildings, city);
   std::cout << "  truth to model: rms " << d.truth_to_model.rms << " max " << d.truth_to_model.max
             << "; model to truth: rms " << d.model_to_truth.rms << " max " << d.model_to_truth.max << std::endl;
-  // walls on the footprints: no eave moves them, the terraced houses are apart
-  assert(d.truth_to_model.rms < 0.1 && d.model_to_truth.rms < 0.1);
-  assert(d.truth_to_model.max < 1 && d.model_to_truth.max < 1);
+  // walls on the footprints and the footprints filled: no eave moves a wall, no corner is cut
+  // off, the terraced houses are apart (measured: 0.021 m at most both ways)
+  assert(d.truth_to_model.rms < 0.05 && d.model_to_truth.rms < 0.05);
+  assert(d.truth_to_model.max < 0.25 && d.model_to_truth.max < 0.25);
 }
 
 // solids made wrong on purpose are refused by solid_defect(), and a box is accepted

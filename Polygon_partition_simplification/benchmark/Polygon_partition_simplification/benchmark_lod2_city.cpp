@@ -3,11 +3,15 @@
 // terraced, a building without wall points, trees; 10 points per m2, 3 cm noise), on 1 and 2
 // threads in one run: the time per input point, the ratio of the two times, whether the two
 // CityJSON outputs are byte-identical, valid buildings and fallbacks, the distances of the
-// models to the truth both ways (mean and largest, sampled), and the peak memory.
+// models to the truth both ways (mean and largest, sampled; without footprints, buildings that
+// touch are one truth, the union of their solids), and the peak memory.
 
 #include "synthetic_city.h"
 
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/intersection.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/lod2_city_reconstruction.h>
 
@@ -49,13 +53,61 @@ static std::string city_json(const std::vector<Building>& buildings)
   return out.str();
 }
 
-// mean distances both ways between the models (LoD 2.2, or LoD 1.2 on fallback) and the truth
-static void print_distances(const std::vector<Building>& buildings, const T::City& city)
+// The surfaces of the truth: one solid per building, or, for a model made without footprints,
+// the union of the solids of buildings that touch (computed by CGAL's corefinement), as
+// touching buildings may then come out as one block (terraced houses: their shared wall is
+// inside the block). Each with the names of its buildings.
+static std::vector<std::pair<T::Mesh, std::string>> truth_surfaces(const T::City& city, bool unite_touching)
 {
+  const std::size_t n = city.buildings.size();
+  std::vector<T::Mesh> solids;
+  std::vector<CGAL::Bbox_3> boxes;
+  for(const T::Building& b : city.buildings) {
+    solids.push_back(T::truth_mesh(b));
+    CGAL::Polygon_mesh_processing::triangulate_faces(solids.back()); // corefinement takes triangles
+    CGAL::Bbox_3 box;
+    for(auto v : solids.back().vertices()) box += solids.back().point(v).bbox();
+    boxes.push_back(box);
+  }
+  std::vector<std::size_t> group(n);
+  for(std::size_t b = 0; b < n; ++b) group[b] = b;
+  auto root = [&](std::size_t b) { while(group[b] != b) b = group[b]; return b; };
+  if(unite_touching)
+    for(std::size_t a = 0; a < n; ++a)
+      for(std::size_t b = a + 1; b < n; ++b)
+        if(CGAL::do_overlap(boxes[a], boxes[b]) && CGAL::Polygon_mesh_processing::do_intersect(solids[a], solids[b]))
+          group[root(b)] = root(a);
+  std::vector<std::pair<T::Mesh, std::string>> surfaces;
+  std::vector<std::size_t> surface_of_root(n, n);
+  for(std::size_t b = 0; b < n; ++b) {
+    const std::size_t r = root(b);
+    const std::string name = std::to_string(b) + " (" + city.kinds[b] + ")";
+    if(surface_of_root[r] == n) {
+      surface_of_root[r] = surfaces.size();
+      surfaces.push_back({solids[b], name});
+      continue;
+    }
+    auto& [mesh, names] = surfaces[surface_of_root[r]];
+    T::Mesh united;
+    if(!CGAL::Polygon_mesh_processing::corefine_and_compute_union(mesh, solids[b], united)) {
+      std::cerr << "the union of the truth of " << names << " and " << name << " failed" << std::endl;
+      std::exit(1);
+    }
+    mesh = std::move(united);
+    names += " + " + name;
+  }
+  return surfaces;
+}
+
+// mean distances both ways between the models (LoD 2.2, or LoD 1.2 on fallback) and the truth
+// (truth_surfaces()), and the buildings farthest from the other surface
+static void print_distances(const std::vector<Building>& buildings, const T::City& city, bool unite_touching)
+{
+  const std::vector<std::pair<T::Mesh, std::string>> surfaces = truth_surfaces(city, unite_touching);
   T::Mesh model, truth;
   for(const Building& b : buildings)
     model.join(b.status == PPS::Building_model_status::LOD22 ? b.lod22 : b.lod12);
-  for(const T::Building& b : city.buildings) truth.join(T::truth_mesh(b));
+  for(const auto& surface : surfaces) truth.join(surface.first);
   const T::Distance_to_mesh to_model(model), to_truth(truth);
   auto mean_max = [](const std::vector<T::Point_3>& samples, const T::Distance_to_mesh& surface) {
     double sum = 0, max = 0;
@@ -68,12 +120,10 @@ static void print_distances(const std::vector<Building>& buildings, const T::Cit
   };
   const auto t2m = mean_max(T::sample_triangles(to_truth.triangles(), 4), to_model);
   const auto m2t = mean_max(T::sample_triangles(to_model.triangles(), 4), to_truth);
-  // the buildings farthest from the other surface, each way
   std::vector<std::pair<double, std::string>> worst;
-  for(std::size_t b = 0; b < city.buildings.size(); ++b) {
-    const T::Distance_to_mesh one(T::truth_mesh(city.buildings[b]));
-    worst.push_back({mean_max(T::sample_triangles(one.triangles(), 4), to_model).second,
-                     "truth " + std::to_string(b) + " (" + city.kinds[b] + ")"});
+  for(const auto& [mesh, names] : surfaces) {
+    const T::Distance_to_mesh one(mesh);
+    worst.push_back({mean_max(T::sample_triangles(one.triangles(), 4), to_model).second, "truth " + names});
   }
   for(const Building& b : buildings) {
     const T::Distance_to_mesh one(b.status == PPS::Building_model_status::LOD22 ? b.lod22 : b.lod12);
@@ -111,14 +161,14 @@ int main(int argc, char** argv)
               << std::endl;
     for(const Building& b : one)
       if(!b.reason.empty()) std::cout << "  building " << b.id << ": " << b.reason << std::endl;
-    print_distances(one, city);
+    print_distances(one, city, true);
     std::vector<Building> with_footprints;
     const PPS::LOD2_city_report r3 = run_with_footprints(city, with_footprints);
     std::cout << "  with the footprints, 1 thread: " << r3.buildings << " buildings, " << r3.buildings_valid << " valid, "
               << r3.seconds << " s" << std::endl;
     for(const Building& b : with_footprints)
       if(!b.reason.empty()) std::cout << "  building " << b.id << ": " << b.reason << std::endl;
-    print_distances(with_footprints, city);
+    print_distances(with_footprints, city, false);
   }
   rusage usage;
   getrusage(RUSAGE_SELF, &usage);

@@ -74,8 +74,9 @@ the number of threads nor the order of the points.
   \cgalParamNBegin{footprints}
     \cgalParamDescription{the footprints of the buildings, as 3DBAG's BAG footprints or
                           OpenStreetMap give them: the edges of a building's footprint are facade
-                          segments of its partition and no roof stands on a cell whose bulk is
-                          outside it, so its walls stand on it; a footprint holding fewer than 50
+                          segments of its partition (they replace the roof outline pieces
+                          along them) and the cells whose bulk is inside it are roofs, those
+                          outside it ground, so the model fills it; a footprint holding fewer than 50
                           building points gives no building (counted in
                           `LOD2_city_report::footprints_without_points`)}
     \cgalParamType{a random access range of `Polygon_with_holes_2`}

@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/building_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/detect_building_planes_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/footprint_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/label_cells_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/triangulate_rings_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
@@ -54,7 +55,8 @@ struct LOD2_settings
   Lift_settings lift;
   double height_tolerance = 0;
   /// a footprint (outer ring counterclockwise, holes clockwise), empty for none: its edges are
-  /// facade segments of the partition and no roof stands outside it
+  /// facade segments of the partition (they replace the roof outline pieces along them, see
+  /// footprint_segments_2.h); the cells inside it are roofs, those outside it ground
   std::vector<std::vector<std::array<double, 2>>> footprint;
 
   Segment_extraction_settings segments_for(double spacing, double maximum_distance) const
@@ -242,22 +244,6 @@ void measure_distances(const std::vector<typename Kernel::Point_3>& points, cons
   if(report.measured_points > 0) report.rms_distance = std::sqrt(sum / double(report.measured_points));
 }
 
-/// the edges of the footprint added to the segments, as facades
-template <class Kernel>
-void add_footprint_segments(const std::vector<std::vector<std::array<double, 2>>>& footprint,
-                            std::vector<Building_segment_2<Kernel>>& segments)
-{
-  for(const auto& ring : footprint)
-    for(std::size_t i = 0; i < ring.size(); ++i) {
-      const auto& p = ring[i];
-      const auto& q = ring[(i + 1) % ring.size()];
-      Building_segment_2<Kernel> s;
-      s.segment = typename Kernel::Segment_2(typename Kernel::Point_2(p[0], p[1]), typename Kernel::Point_2(q[0], q[1]));
-      s.is_facade = true;
-      segments.push_back(s);
-    }
-}
-
 /// true when (x, y) is inside the footprint (inside its outer ring and outside its holes)
 inline bool is_inside_footprint(const std::vector<std::vector<std::array<double, 2>>>& footprint, double x, double y)
 {
@@ -271,10 +257,12 @@ inline bool is_inside_footprint(const std::vector<std::vector<std::array<double,
   return true;
 }
 
-/// a roof label costs +infinity on the cells whose largest triangle has its centroid outside
-/// the footprint (the simplification may move the footprint's lines a little: a cell is inside
-/// by its bulk)
-inline void forbid_roofs_outside(const Cell_arrangement_2& cells,
+/// The labels a footprint allows: the cells outside it are ground, the cells inside it are roofs
+/// (as 3DBAG's models fill their footprints: a thin cell between an outline that cuts a corner
+/// and the footprint's corner is not left out). A cell is inside when the centroid of its largest
+/// triangle is: the simplification may move the footprint's lines a little, so a cell is judged
+/// by its bulk.
+inline void confine_to_footprint(const Cell_arrangement_2& cells,
                                  const std::vector<std::vector<std::array<double, 2>>>& footprint,
                                  std::vector<std::vector<double>>& cost)
 {
@@ -298,9 +286,10 @@ inline void forbid_roofs_outside(const Cell_arrangement_2& cells,
         y = (a[1] + b[1] + d[1]) / 3;
       }
     }
-    if(largest < 0 || is_inside_footprint(footprint, x, y)) continue;
+    if(largest < 0) continue;
+    const bool inside = is_inside_footprint(footprint, x, y);
     for(std::size_t l = 0; l < cost[c].size(); ++l)
-      if(l != Height_functions::ground_label) cost[c][l] = std::numeric_limits<double>::infinity();
+      if((l == Height_functions::ground_label) == inside) cost[c][l] = std::numeric_limits<double>::infinity();
   }
 }
 
@@ -334,7 +323,7 @@ void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const
   const Height_functions heights(planes);
   const std::vector<Lift_edge> edges = lift_edges(arrangement, facades, settings.lift);
   std::vector<std::vector<double>> cost = lift_data_term(arrangement, evidence, heights, settings.lift);
-  if(!settings.footprint.empty()) forbid_roofs_outside(arrangement, settings.footprint, cost);
+  if(!settings.footprint.empty()) confine_to_footprint(arrangement, settings.footprint, cost);
   const std::vector<std::size_t> labels = label_cells(arrangement, edges, std::move(cost), heights);
   report.lift_seconds = timer.time();
   timer.reset();
@@ -411,7 +400,7 @@ LOD2_report reconstruct_lod2_from_input(Input& input, CGAL::Surface_mesh<Point>&
   report.planes_seconds = timer.time();
   timer.reset();
   auto segments = building_segments<Kernel>(input.points, planes, input.settings.segments_for(planes));
-  add_footprint_segments(input.settings.footprint, segments);
+  replace_outlines_by_footprint(input.settings.footprint, input.settings.lift.facade_distance, segments);
   const std::vector<typename Kernel::Segment_2> segments_2 = distinct_segments(segments);
   for(const auto& s : segments) report.facade_segments += s.is_facade ? 1 : 0;
   report.segments = segments_2.size();
