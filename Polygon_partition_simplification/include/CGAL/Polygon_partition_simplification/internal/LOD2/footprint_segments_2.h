@@ -17,10 +17,10 @@
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/runs_along_2.h>
 
 #include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_2.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -28,21 +28,6 @@ namespace Polygon_partition_simplification {
 namespace internal {
 
 using Footprint_rings = std::vector<std::vector<std::array<double, 2>>>;
-
-/// the distance from (x, y) to the boundary of `footprint`
-inline double distance_to_footprint_boundary(const Footprint_rings& footprint, const std::array<double, 2>& p)
-{
-  double best = HUGE_VAL;
-  for(const auto& ring : footprint)
-    for(std::size_t i = 0; i < ring.size(); ++i) {
-      const auto& a = ring[i];
-      const auto& b = ring[(i + 1) % ring.size()];
-      const double ex = b[0] - a[0], ey = b[1] - a[1], squared = ex * ex + ey * ey;
-      const double u = squared == 0 ? 0 : std::clamp(((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / squared, 0.0, 1.0);
-      best = std::min(best, std::hypot(a[0] + u * ex - p[0], a[1] + u * ey - p[1]));
-    }
-  return best;
-}
 
 /// Adds the edges of `footprint` to `segments` as facades, after removing the roof outline pieces
 /// (facade segments of a single roof plane) that run along a footprint edge within `distance`,
@@ -60,13 +45,18 @@ void replace_outlines_by_footprint(const Footprint_rings& footprint, double dist
       const auto& q = ring[(i + 1) % ring.size()];
       edges.emplace_back(typename Kernel::Point_2(p[0], p[1]), typename Kernel::Point_2(q[0], q[1]));
     }
+  auto near_boundary = [&](const typename Kernel::Point_2& p) {
+    return std::any_of(edges.begin(), edges.end(), [&](const typename Kernel::Segment_2& e) {
+      return CGAL::to_double(CGAL::squared_distance(p, e)) <= distance * distance;
+    });
+  };
   auto replaced = [&](const Building_segment_2<Kernel>& s) {
     if(!s.is_facade || s.first_plane != s.second_plane) return false;
     const std::array<double, 2> a{{CGAL::to_double(s.segment.source().x()), CGAL::to_double(s.segment.source().y())}};
     const std::array<double, 2> b{{CGAL::to_double(s.segment.target().x()), CGAL::to_double(s.segment.target().y())}};
     if(runs_along(a, b, edges, distance)) return true;
-    return std::hypot(b[0] - a[0], b[1] - a[1]) < 2 * distance &&
-           std::min(distance_to_footprint_boundary(footprint, a), distance_to_footprint_boundary(footprint, b)) <= distance;
+    return CGAL::to_double(s.segment.squared_length()) < 4 * distance * distance &&
+           (near_boundary(s.segment.source()) || near_boundary(s.segment.target()));
   };
   segments.erase(std::remove_if(segments.begin(), segments.end(), replaced), segments.end());
   for(const auto& e : edges) {
