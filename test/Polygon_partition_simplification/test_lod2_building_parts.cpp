@@ -21,8 +21,12 @@
 //   roof gives none; across a courtyard narrower than the walls are high, the outside of each
 //   wing's facade is the courtyard although the other wing's roof is within reach.
 // - internal::replace_outlines_by_footprint, on a square footprint and hand-made segments: the
-//   outline pieces along its edges and the short ones cutting its corners are replaced by its
-//   edges; a ridge, an outline piece inside it and a short one far from its boundary stay.
+//   outline pieces along its edges, the lines of a wall plane and a roof plane along them and
+//   the outline pieces cutting its corners are replaced by its edges; a ridge, an outline piece
+//   inside it, a short one far from its boundary, one from an edge to the opposite one and a
+//   step wall inside stay. On a stepped
+//   footprint, the step wall on the line of two footprint edges keeps the part between them,
+//   the parts along the edges are removed.
 // the package's headers first: they read Boost's graph headers with g++'s false positives
 // silenced (internal/CGAL_compatibility.h), before CGAL 6's triangulate_faces.h reads them
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
@@ -811,10 +815,14 @@ void test_footprint_replaces_outlines()
     piece(2, 10, 18, 10, false, 1, 2),   // a ridge between two roof planes
     piece(5, 4, 15, 4, true, 1, 1),      // an outline piece inside (a step of the roof)
     piece(9, 9, 10, 10.2, true, 2, 2),   // short, far from the boundary
-    piece(0.5, 3, 0.5, 17, true, 3, 1)}; // along an edge, but a wall plane meeting a roof plane
+    piece(3, 19.2, 3.9, 19.6, false, 1, 2), // short near the boundary, but a ridge
+    piece(2, 15, 17, 15, true, 3, 1),     // a wall plane meeting a roof plane inside (a step)
+    piece(0.5, 8, 19.5, 12, true, 2, 2)}; // from an edge to the opposite one (a step)
   const std::vector<Segment> replaced{
     piece(19.6, 2, 19.4, 18, true, 1, 1), // along the edge x = 20, 0.5 m inside
-    piece(18.9, 0.3, 19.7, 1.2, true, 2, 2)}; // cuts the corner (20, 0)
+    piece(0.5, 3, 0.5, 17, true, 3, 1),   // along the edge x = 0: a wall plane meeting a roof plane
+    piece(18.9, 0.3, 19.7, 1.2, true, 2, 2),  // cuts the corner (20, 0)
+    piece(0.4, 17.5, 2.5, 19.6, true, 2, 2)}; // from an edge to the next, 2 m from their corner (0, 20)
   std::vector<Segment> segments = kept;
   segments.insert(segments.end(), replaced.begin(), replaced.end());
   const std::vector<std::vector<std::array<double, 2>>> square{{{{0, 0}}, {{20, 0}}, {{20, 20}}, {{0, 20}}}};
@@ -831,6 +839,23 @@ void test_footprint_replaces_outlines()
   std::vector<Segment> unchanged = kept;
   PPS::internal::replace_outlines_by_footprint({}, 1., unchanged);
   assert(unchanged.size() == kept.size());
+  // a stepped footprint: the high wall at y = 10 stands between x = 6 and 14, above the lower
+  // part; its line with the high roof runs across the whole building, 0.2 m off and 2 degrees
+  // from the footprint's edges (0, 10)-(6, 10) and (14, 10)-(20, 10)
+  const std::vector<std::vector<std::array<double, 2>>> stepped{
+    {{{0, 0}}, {{20, 0}}, {{20, 10}}, {{14, 10}}, {{14, 16}}, {{6, 16}}, {{6, 10}}, {{0, 10}}}};
+  std::vector<Segment> step{piece(-0.5, 9.8, 20.5, 9.8 + 21 * std::tan(2 * CGAL_PI / 180), true, 4, 1)};
+  PPS::internal::replace_outlines_by_footprint(stepped, 1., step);
+  assert(step.size() == 1 + 8);
+  const Segment& middle = step.front();
+  assert(middle.first_plane == 4 && middle.second_plane == 1 && middle.is_facade);
+  // the middle keeps its line and ends where the edges end, at x = 6 and 14
+  const K::Line_2 line(K::Point_2(-0.5, 9.8), K::Point_2(20.5, 9.8 + 21 * std::tan(2 * CGAL_PI / 180)));
+  for(const K::Point_2& p : {middle.segment.source(), middle.segment.target()})
+    assert(CGAL::squared_distance(p, line) < 1e-20);
+  const double x0 = std::min(middle.segment.source().x(), middle.segment.target().x());
+  const double x1 = std::max(middle.segment.source().x(), middle.segment.target().x());
+  assert(std::abs(x0 - 6) < 1e-9 && std::abs(x1 - 14) < 1e-9);
 }
 
 int main()
