@@ -20,6 +20,8 @@
 //   multiples of the step outwards and inwards, at the point's height; a wall that carries no
 //   roof gives none; across a courtyard narrower than the walls are high, the outside of each
 //   wing's facade is the courtyard although the other wing's roof is within reach.
+// - internal::extend_ridges_to_footprint, on an L-shaped footprint (see
+//   test_ridges_reach_the_footprint()).
 // - internal::replace_outlines_by_footprint, on a square footprint and hand-made segments: the
 //   outline pieces along its edges, the lines of a wall plane and a roof plane along them and
 //   the outline pieces cutting its corners are replaced by its edges; a ridge, an outline piece
@@ -858,6 +860,50 @@ void test_footprint_replaces_outlines()
   assert(std::abs(x0 - 6) < 1e-9 && std::abs(x1 - 14) < 1e-9);
 }
 
+// Ridges reach the footprint's boundary: on an L-shaped footprint, the ridge of either wing is
+// extended to its end walls, an oblique one to where its line leaves the L, one on a diagonal
+// through two corners to these corners, one sticking out of the footprint is cut where it leaves
+// it; one whose middle is outside, facade segments and roof outline pieces stay as they are.
+void test_ridges_reach_the_footprint()
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Segment = PPS::Building_segment_2<K>;
+  auto piece = [](double x0, double y0, double x1, double y1, bool facade, std::size_t first, std::size_t second) {
+    Segment s;
+    s.segment = K::Segment_2(K::Point_2(x0, y0), K::Point_2(x1, y1));
+    s.is_facade = facade;
+    s.first_plane = first;
+    s.second_plane = second;
+    return s;
+  };
+  // the L: (0, 0) to (30, 0) to (30, 10) to (10, 10) to (10, 30) to (0, 30)
+  const std::vector<std::vector<std::array<double, 2>>> footprint{
+    {{{0, 0}}, {{30, 0}}, {{30, 10}}, {{10, 10}}, {{10, 30}}, {{0, 30}}}};
+  std::vector<Segment> segments{
+    piece(12, 5, 26, 5, false, 1, 2),    // the ridge of the long wing: from x = 0 to 30
+    piece(5, 12, 5, 25, false, 3, 4),    // the other wing's: from y = 0 to 30
+    piece(14, 6, 18, 8, false, 1, 3),    // on y = x / 2 - 1: from (2, 0) to (22, 10)
+    piece(20, 20, 25, 25, false, 3, 1),  // its middle is outside: unchanged
+    piece(-2, 2, 3, 2, false, 2, 3),     // sticks out through x = 0: cut there, extended to x = 30
+    piece(12, 5, 26, 5, true, 1, 5),     // a facade segment: unchanged
+    piece(12, 4, 26, 4, true, 1, 1)};    // a roof outline piece: unchanged
+  const std::vector<Segment> given = segments;
+  PPS::internal::extend_ridges_to_footprint(footprint, segments);
+  auto is = [](const Segment& s, double x0, double y0, double x1, double y1) {
+    return CGAL::squared_distance(s.segment.source(), K::Point_2(x0, y0)) < 1e-18 &&
+           CGAL::squared_distance(s.segment.target(), K::Point_2(x1, y1)) < 1e-18;
+  };
+  assert(is(segments[0], 0, 5, 30, 5));
+  assert(is(segments[1], 5, 0, 5, 30));
+  assert(is(segments[2], 2, 0, 22, 10));
+  assert(is(segments[4], 0, 2, 30, 2));
+  for(std::size_t i : {3, 5, 6}) assert(segments[i].segment == given[i].segment);
+  // on the diagonal, through the corners (0, 0) and (10, 10): inside the L between them
+  std::vector<Segment> diagonal{piece(2, 2, 6, 6, false, 1, 2)};
+  PPS::internal::extend_ridges_to_footprint(footprint, diagonal);
+  assert(is(diagonal[0], 0, 0, 10, 10));
+}
+
 int main()
 {
   test_alpha_expansion_against_brute_force();
@@ -868,6 +914,7 @@ int main()
   facade_evidence::test_facade_evidence();
   facade_evidence::test_facade_evidence_across_a_courtyard();
   test_footprint_replaces_outlines();
+  test_ridges_reach_the_footprint();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;
 }

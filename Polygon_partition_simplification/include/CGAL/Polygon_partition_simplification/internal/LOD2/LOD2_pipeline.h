@@ -401,6 +401,7 @@ LOD2_report reconstruct_lod2_from_input(Input& input, CGAL::Surface_mesh<Point>&
   timer.reset();
   auto segments = building_segments<Kernel>(input.points, planes, input.settings.segments_for(planes));
   replace_outlines_by_footprint(input.settings.footprint, input.settings.lift.facade_distance, segments);
+  extend_ridges_to_footprint(input.settings.footprint, segments);
   const std::vector<typename Kernel::Segment_2> segments_2 = distinct_segments(segments);
   for(const auto& s : segments) report.facade_segments += s.is_facade ? 1 : 0;
   report.segments = segments_2.size();

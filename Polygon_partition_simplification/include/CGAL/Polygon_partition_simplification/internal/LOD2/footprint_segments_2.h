@@ -160,6 +160,58 @@ void replace_outlines_by_footprint(const Footprint_rings& footprint, double dist
   }
 }
 
+/// The chord of the line through (a, b) inside `footprint` that contains the middle of (a, b),
+/// as parameters [t0, t1] of a + t (b - a); empty (t0 > t1) when the middle is outside. An edge
+/// counts as crossed when its ends are on different sides of the line, one side closed, so that
+/// a line through a corner crosses once or twice as the boundary does.
+inline std::array<double, 2> chord_in_footprint(const Footprint_rings& footprint, const std::array<double, 2>& a,
+                                                const std::array<double, 2>& b)
+{
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  std::vector<double> crossings;
+  for(const auto& ring : footprint)
+    for(std::size_t i = 0; i < ring.size(); ++i) {
+      const auto& p = ring[i];
+      const auto& q = ring[(i + 1) % ring.size()];
+      const double side_p = dx * (p[1] - a[1]) - dy * (p[0] - a[0]);
+      const double side_q = dx * (q[1] - a[1]) - dy * (q[0] - a[0]);
+      if((side_p >= 0) == (side_q >= 0)) continue;
+      const double u = side_p / (side_p - side_q); // where (p, q) meets the line
+      const double x = p[0] + u * (q[0] - p[0]), y = p[1] + u * (q[1] - p[1]);
+      crossings.push_back(((x - a[0]) * dx + (y - a[1]) * dy) / (dx * dx + dy * dy));
+    }
+  const std::size_t before = std::size_t(std::count_if(crossings.begin(), crossings.end(), [](double t) { return t < 0.5; }));
+  if(before % 2 == 0) return {{1, 0}};
+  std::array<double, 2> chord{{-HUGE_VAL, HUGE_VAL}};
+  for(double t : crossings) {
+    if(t < 0.5)
+      chord[0] = std::max(chord[0], t);
+    else
+      chord[1] = std::min(chord[1], t);
+  }
+  return chord;
+}
+
+/// Extends (or shortens) every ridge of `segments` (the line where two roof planes meet) to the
+/// chord of its line inside `footprint`. A ridge found from its points stops short of the walls,
+/// and a roof outline piece that its extension then meets first joins the corner beyond to the
+/// wrong slope's cell; the footprint says where the roof ends.
+template <class Kernel>
+void extend_ridges_to_footprint(const Footprint_rings& footprint, std::vector<Building_segment_2<Kernel>>& segments)
+{
+  using Point = typename Kernel::Point_2;
+  for(Building_segment_2<Kernel>& s : segments) {
+    if(s.is_facade || s.first_plane == s.second_plane) continue;
+    const std::array<double, 2> a{{CGAL::to_double(s.segment.source().x()), CGAL::to_double(s.segment.source().y())}};
+    const std::array<double, 2> b{{CGAL::to_double(s.segment.target().x()), CGAL::to_double(s.segment.target().y())}};
+    if(a == b) continue;
+    const std::array<double, 2> t = chord_in_footprint(footprint, a, b);
+    if(!(t[0] < t[1])) continue;
+    s.segment = typename Kernel::Segment_2(Point(a[0] + t[0] * (b[0] - a[0]), a[1] + t[0] * (b[1] - a[1])),
+                                           Point(a[0] + t[1] * (b[0] - a[0]), a[1] + t[1] * (b[1] - a[1])));
+  }
+}
+
 } // namespace internal
 } // namespace Polygon_partition_simplification
 } // namespace CGAL
