@@ -801,18 +801,23 @@ void test_facade_evidence_across_a_courtyard()
 
 // ---------------------------------------------------------------------------------------------
 // A square footprint of 20 m, a facade distance of 1 m: which segments it replaces.
+// the segment from (x0, y0) to (x1, y1) of the planes `first` and `second`
+PPS::Building_segment_2<CGAL::Exact_predicates_inexact_constructions_kernel>
+piece(double x0, double y0, double x1, double y1, bool facade, std::size_t first, std::size_t second)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  PPS::Building_segment_2<K> s;
+  s.segment = K::Segment_2(K::Point_2(x0, y0), K::Point_2(x1, y1));
+  s.is_facade = facade;
+  s.first_plane = first;
+  s.second_plane = second;
+  return s;
+}
+
 void test_footprint_replaces_outlines()
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Segment = PPS::Building_segment_2<K>;
-  auto piece = [](double x0, double y0, double x1, double y1, bool facade, std::size_t first, std::size_t second) {
-    Segment s;
-    s.segment = K::Segment_2(K::Point_2(x0, y0), K::Point_2(x1, y1));
-    s.is_facade = facade;
-    s.first_plane = first;
-    s.second_plane = second;
-    return s;
-  };
   const std::vector<Segment> kept{
     piece(2, 10, 18, 10, false, 1, 2),   // a ridge between two roof planes
     piece(5, 4, 15, 4, true, 1, 1),      // an outline piece inside (a step of the roof)
@@ -868,14 +873,6 @@ void test_ridges_reach_the_footprint()
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Segment = PPS::Building_segment_2<K>;
-  auto piece = [](double x0, double y0, double x1, double y1, bool facade, std::size_t first, std::size_t second) {
-    Segment s;
-    s.segment = K::Segment_2(K::Point_2(x0, y0), K::Point_2(x1, y1));
-    s.is_facade = facade;
-    s.first_plane = first;
-    s.second_plane = second;
-    return s;
-  };
   // the L: (0, 0) to (30, 0) to (30, 10) to (10, 10) to (10, 30) to (0, 30)
   const std::vector<std::vector<std::array<double, 2>>> footprint{
     {{{0, 0}}, {{30, 0}}, {{30, 10}}, {{10, 10}}, {{10, 30}}, {{0, 30}}}};
