@@ -12,7 +12,8 @@
 // cells between itself and the footprint edge, and a wedge cell that the lift can give to the
 // wrong roof plane or to the ground (a ridge that stops short of the edge joins the far roof
 // slope to the sliver beyond the near one). Only the parts along the footprint are removed: the
-// wall of a step is often on the line of two footprint edges, and its middle stays.
+// wall of a step is often on the line of two footprint edges, and its middle stays. The ridges
+// are extended to the footprint's boundary, where the roof ends.
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
@@ -199,6 +200,7 @@ inline std::array<double, 2> chord_in_footprint(const Footprint_rings& footprint
 template <class Kernel>
 void extend_ridges_to_footprint(const Footprint_rings& footprint, std::vector<Building_segment_2<Kernel>>& segments)
 {
+  if(footprint.empty()) return;
   using Point = typename Kernel::Point_2;
   for(Building_segment_2<Kernel>& s : segments) {
     if(s.is_facade || s.first_plane == s.second_plane) continue;
