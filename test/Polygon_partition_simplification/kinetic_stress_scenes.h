@@ -399,7 +399,7 @@ struct Scene_result
   bool package_says_valid = false; // Line_partition_2::is_valid()
   std::size_t uncovered = 0;  // input segments with parts that split a cell but are not covered by edges
   std::size_t segments = 0, edges = 0;
-  std::size_t propagations = 0; // more than one when ends hanging at a point were released
+  std::size_t extended_corner_ends = 0; // ends stopped at a corner that went on to split a pinched cell
   double seconds = 0;         // of kinetic_partition_2()
 };
 
@@ -424,7 +424,7 @@ Scene_result run_scene(const std::vector<Segment>& scene, const NamedParameters&
     return r;
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.propagations = report.propagations;
+  r.extended_corner_ends = report.extended_corner_ends;
   std::vector<std::array<double, 2>> points, normalized;
   for(std::size_t v = 0; v < p.number_of_vertices(); ++v) {
     const K::Point_2 q = p.point(v);

@@ -250,17 +250,23 @@ void test_simple_configurations()
     assert(CGAL::simplify_polygon_partition_2(p).cells_after == 4 && p.is_valid());
   }
   // Chains closed by ends that meet at time 0 and hang at a single point: the cell around them
-  // was not a simple polygon (the partition was invalid); a ray released from one of their
-  // corners splits it. An "X" whose two lower ends are joined (a triangle hanging at the
-  // crossing); a loop with a reflex corner, whose first candidate ray goes into the loop; a
-  // chain whose corners are not at the ends of the defective edges (found by fuzzing).
+  // was not a simple polygon (the partition was invalid); an end stopped at one of their
+  // corners goes on and splits it. An "X" whose two lower ends are joined (a triangle hanging
+  // at the crossing); a loop with a reflex corner, whose first candidate ray goes into the
+  // loop; a chain whose corners are not at the ends of the defective edges (found by fuzzing);
+  // two squares sharing a corner, alone in the rectangle (the first end joins them to the
+  // rectangle, the second splits the cell: 4 cells).
   for(const std::vector<K::Segment_2>& s :
       {std::vector<K::Segment_2>{{{0, 0}, {3, 2}}, {{0, 2}, {3, 0}}, {{0, 0}, {3, 0}}},
        std::vector<K::Segment_2>{{{1, 1}, {0, 1}}, {{4, 0}, {0, 3}}, {{2, 3}, {1, 1}}, {{3, 3}, {4, 3}}, {{4, 0}, {0, 1}}},
        std::vector<K::Segment_2>{{{1, 2}, {3, 1}}, {{4, 3}, {3, 4}}, {{4, 0}, {3, 3}}, {{3, 0}, {1, 2}},
-                                 {{3, 3}, {2, 1}}, {{4, 0}, {3, 2}}, {{0, 0}, {2, 3}}}}) {
-    const Partition p = CGAL::kinetic_partition_2(s);
-    assert(p.is_valid());
+                                 {{3, 3}, {2, 1}}, {{4, 0}, {3, 2}}, {{0, 0}, {2, 3}}},
+       std::vector<K::Segment_2>{{{0, 0}, {1, 0}}, {{1, 0}, {1, 1}}, {{1, 1}, {0, 1}}, {{0, 1}, {0, 0}},
+                                 {{1, 1}, {2, 1}}, {{2, 1}, {2, 2}}, {{2, 2}, {1, 2}}, {{1, 2}, {1, 1}}}}) {
+    PPS::Kinetic_partition_report report;
+    const Partition p = CGAL::kinetic_partition_2(s, PPS::parameters::report(&report));
+    assert(p.is_valid() && report.extended_corner_ends >= 1);
+    if(s.size() == 8) assert(report.extended_corner_ends == 2 && p.number_of_cells() == 4);
     // the same partition for the segments in another order, or reversed
     std::vector<K::Segment_2> other(s.rbegin(), s.rend());
     for(auto& x : other) x = x.opposite();
@@ -413,7 +419,7 @@ void test_builders()
       }
       return s;
     };
-    // (it was not valid; a ray released from one of the corners now splits that cell)
+    // (it was not valid; an end stopped at one of the corners now goes on and splits that cell)
     assert(CGAL::kinetic_partition_2(walls(0)).is_valid() && CGAL::kinetic_partition_2(walls(0.01)).is_valid());
   }
   // a polygon with a hole (a courtyard): 8 lines, 8 points, 8 edges, 2 cells (the ring and the yard)

@@ -119,11 +119,10 @@ it invalid.
 Ends that meet at time 0 (segments sharing an endpoint) stop each other, so that corners
 stay corners. When a closed chain of such corners touches the rest of the partition at a
 single point (an "X" whose two lower ends are joined by a third segment; two squares sharing
-a corner), the cell around it would not be a simple polygon: the partition is then computed
-again with one or a few of these ends released, each going on from its corner, until it is
-valid (at most 16 propagations in all); when none of these is valid, the first partition is
-returned, and it is not valid (`Line_partition_2::is_valid()` says so, and
-`simplify_polygon_partition_2()` refuses it).
+a corner), the cell around it would not be a simple polygon: one of these ends goes on from its
+corner, straight into that cell, to the cell's boundary, which splits it (after the
+propagation, in the exact arrangement of the extents; points that the rounding below merges
+count as one point). The propagation runs once.
 
 \throws Polygon_partition_simplification::Input_error when `segments` is empty
 (`EMPTY_INPUT`), has a NaN, infinite or huge coordinate (`NON_FINITE_COORDINATE`) or a segment

@@ -23,7 +23,7 @@ struct Kinetic_partition_report
   std::size_t overlapping_segments = 0; ///< other segments merged with a collinear segment they overlap (their union grows as one segment)
   std::size_t moved_segments = 0;       ///< segments moved onto the line of a longer one (`collinearity_distance`)
   std::size_t grown_segments = 0;       ///< segments grown by the propagation (after the merges)
-  std::size_t propagations = 0;         ///< propagations run: more than one when ends hanging at a point were released
+  std::size_t extended_corner_ends = 0; ///< ends stopped at a corner that went on to split a cell around a chain of corners hanging at a point
   std::size_t events = 0;               ///< intersections examined by the last propagation
 };
 

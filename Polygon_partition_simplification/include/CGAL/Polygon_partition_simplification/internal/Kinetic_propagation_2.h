@@ -11,8 +11,7 @@
 // index stops); it crosses instead while it has crossings left, or when its next
 // intersection is closer than the crossing distance. Rays stop at the bounding rectangle.
 // An end that lies on another segment stops there at time 0 (two segments sharing an endpoint
-// stop each other): the corners of a footprint stay corners. A ray can be released from this
-// rule (see `release()`): it then goes on from its origin, by the other rules.
+// stop each other): the corners of a footprint stay corners.
 //
 // Exactness: intersection points and arrival times are exact (`EK`, the exact constructions
 // kernel of the geometric traits, lazy by default); events are
@@ -117,7 +116,6 @@ public:
     }
     for(int k = 0; k < 4; ++k) box_[k] = Line(box[k], box[(k + 1) % 4]);
     rays_.resize(2 * n);
-    released_.assign(2 * n, false);
     for(std::size_t r = 0; r < rays_.size(); ++r) {
       Ray& ray = rays_[r];
       const auto& s = segments[r / 2];
@@ -145,10 +143,6 @@ public:
     }
   }
 
-  // Ray r (2 i: from the source of segment i, 2 i + 1: from its target) does not stop at its
-  // origin at time 0. Before run().
-  void release(std::size_t r) { released_.at(r) = true; }
-
   std::size_t number_of_rays() const { return rays_.size(); }
   // did ray r stop at its origin, at time 0 (and what is its origin)?
   bool stopped_at_origin(std::size_t r) const
@@ -156,6 +150,8 @@ public:
     return rays_[r].stopped && CGAL::sign(rays_[r].stop_parameter) == CGAL::ZERO;
   }
   const Point& origin(std::size_t r) const { return rays_[r].origin; }
+  // the direction ray r grows in: away from its segment
+  const Vector& direction(std::size_t r) const { return rays_[r].direction; }
 
   void run()
   {
@@ -446,8 +442,6 @@ private:
         if(!stop) ++statistics_.crossings;
       }
     }
-    if(stop && released_[r] && head.segment != box_candidate && CGAL::sign(ray.head_parameter) == CGAL::ZERO)
-      stop = false;
     if(stop) {
       ray.stopped = true;
       ray.stop = I;
@@ -488,7 +482,6 @@ private:
   std::vector<std::uint32_t> parallel_class_; // equal for parallel segments
   std::array<Line, 4> box_;
   std::vector<Ray> rays_;
-  std::vector<bool> released_;
   std::priority_queue<Queued, std::vector<Queued>, Later> queue_;
   std::size_t maximum_crossings_;
   double crossing_distance_;

@@ -17,6 +17,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/Piece_arrangement_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/merge_rounded_points_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
+#include <CGAL/Polygon_partition_simplification/internal/split_pinched_cells_2.h>
 
 #include <CGAL/Arrangement_2.h>
 
@@ -247,13 +248,16 @@ double merge_tolerance(const Frame& frame)
 // the exact evaluation of these endpoints (for pieces on the same line, whose keys are equal,
 // the interval filters never decide), the most expensive part of a kinetic partition.
 // `gt`: the geometric traits of the result, whose exact constructions kernel is `EK`.
+// `corner_rays`: the ends of pieces that may go on to split a cell that is not a simple polygon
+// (see split_pinched_cells_2.h); `extended`, if given, is set to the number of them that did.
 template <class GeomTraits, class EK>
 Line_partition_2<GeomTraits>
 build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
                      const std::vector<Exact_piece<EK>>& metric_segments,
                      const typename Line_partition_2<GeomTraits>::Frame& frame,
                      const typename Line_partition_2<GeomTraits>::Geom_traits& gt,
-                     const std::vector<std::array<double, 4>>& group_lines = {})
+                     const std::vector<std::array<double, 4>>& group_lines = {},
+                     const std::vector<Corner_ray<EK>>& corner_rays = {}, std::size_t* extended = nullptr)
 {
   using Partition = Line_partition_2<GeomTraits>;
   static_assert(std::is_same<EK, typename Partition::Geom_traits::Exact_constructions_kernel>::value,
@@ -262,7 +266,7 @@ build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
   Piece_lines<typename Partition::Line> lines =
     identify_lines<typename Partition::Line>(pieces, metric_segments, frame, group_lines);
   // 2. The exact arrangement of the pieces, which finds every intersection and merges overlaps;
-  //    each piece carries its line to its edges.
+  //    each piece carries its line to its edges; the cells that are not simple polygons split.
   Piece_arrangement<EK> arrangement;
   {
     std::vector<typename Piece_traits<EK>::Curve_2> curves;
@@ -270,6 +274,11 @@ build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
     for(std::size_t i = 0; i < pieces.size(); ++i)
       curves.emplace_back(pieces[i].segment, lines.piece_line[i]);
     CGAL::insert(arrangement, curves.begin(), curves.end());
+  }
+  {
+    const Point_rounding rounding{frame.center_x, frame.center_y, frame.scale, merge_tolerance(frame)};
+    const std::size_t added = split_pinched_cells<EK>(arrangement, corner_rays, lines.piece_line, rounding);
+    if(extended != nullptr) *extended = added;
   }
   // 3. The fidelity metrics of the lines.
   accumulate_metrics(lines.lines, frame, pieces, lines.piece_line, metric_segments, lines.metric_line);

@@ -7,8 +7,8 @@
 // The kinetic partition of `kinetic_partition_2()`: the input read and checked, collinear
 // segments snapped onto one line and overlapping ones merged, the propagation
 // (Kinetic_propagation_2.h) in the enclosing rectangle, and the partition built from its extents
-// (build_line_partition_2.h), propagated again while a chain of corners hangs at one point
-// (release_hanging_corners_2.h).
+// (build_line_partition_2.h), where an end stopped at a corner goes on when a chain of corners
+// hangs at one point (split_pinched_cells_2.h).
 
 #include <CGAL/license/Polygon_partition_simplification.h>
 
@@ -19,7 +19,6 @@
 #include <CGAL/Polygon_partition_simplification/internal/Geom_traits_check.h>
 #include <CGAL/Polygon_partition_simplification/internal/Kinetic_propagation_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/build_line_partition_2.h>
-#include <CGAL/Polygon_partition_simplification/internal/release_hanging_corners_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/snap_collinear_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/parameters.h>
 
@@ -190,22 +189,22 @@ compute_kinetic_partition(const SegmentRange& segments, const NamedParameters& n
                         rectangle.half_extent[1] + margin_across};
   const auto frame = PPS::internal::frame_of<typename Partition::Frame>(framed);
 
-  // The partition of a propagation that has run: the extents and the sides of the rectangle.
-  auto partition_of = [&](const PPS::internal::Kinetic_propagation_2<EK>& propagation) {
-    std::vector<PPS::internal::Exact_piece<EK>> pieces;
-    pieces.reserve(distinct.size() + 4);
-    for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false, distinct[i].second});
-    for(int k = 0; k < 4; ++k) pieces.push_back({typename EK::Segment_2(box[k], box[(k + 1) % 4]), true});
-    report.events = propagation.statistics().events;
-    return PPS::internal::build_line_partition<typename Result::Given>(pieces, metric_segments, frame, gt, input);
-  };
-  auto make_propagation = [&] {
-    return PPS::internal::Kinetic_propagation_2<EK>(distinct_segments, box, settings.maximum_crossings, settings.crossing_distance);
-  };
-  // again with some corners released while a chain of corners hangs at a point (see
-  // release_hanging_corners_2.h)
-  Partition result =
-    PPS::internal::propagate_releasing_hanging_corners(make_propagation, partition_of, 1e-9 * frame.scale, report.propagations);
+  // The propagation, and the partition of its extents and the sides of the rectangle, with the
+  // ends stopped at their corners at time 0 offered to split the cells that are not simple
+  // polygons (see split_pinched_cells_2.h).
+  PPS::internal::Kinetic_propagation_2<EK> propagation(distinct_segments, box, settings.maximum_crossings,
+                                                       settings.crossing_distance);
+  propagation.run();
+  report.events = propagation.statistics().events;
+  std::vector<PPS::internal::Exact_piece<EK>> pieces;
+  pieces.reserve(distinct.size() + 4);
+  for(std::size_t i = 0; i < distinct.size(); ++i) pieces.push_back({propagation.extent(i), false, distinct[i].second});
+  for(int k = 0; k < 4; ++k) pieces.push_back({typename EK::Segment_2(box[k], box[(k + 1) % 4]), true});
+  std::vector<PPS::internal::Corner_ray<EK>> corner_rays;
+  for(std::size_t r = 0; r < propagation.number_of_rays(); ++r)
+    if(propagation.stopped_at_origin(r)) corner_rays.push_back({propagation.origin(r), propagation.direction(r), r / 2});
+  Partition result = PPS::internal::build_line_partition<typename Result::Given>(
+    pieces, metric_segments, frame, gt, input, corner_rays, &report.extended_corner_ends);
   if(auto* out = parameters::choose_parameter(parameters::get_parameter(np, PPS::internal_np::report), static_cast<PPS::Kinetic_partition_report*>(nullptr)))
     *out = report;
   return result;
