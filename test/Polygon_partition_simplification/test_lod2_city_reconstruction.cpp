@@ -272,8 +272,36 @@ void test_bad_input()
   }
 }
 
+// A deep, narrow courtyard without footprints: building 59 of the 120-building tile (yard about
+// 7 m wide, walls 9.4 m high), reconstructed from the points of its lot. The lift roofed its
+// yard over (the truth 4.7 m from the model) until points far below a roof plane refuted it.
+void test_courtyard_without_footprints()
+{
+  T::City_options options;
+  options.buildings = 120;
+  const T::City city = T::make_city(options);
+  const std::size_t yard = 59;
+  assert(city.kinds[yard] == "courtyard" && city.footprint_holes[yard].size() == 1);
+  CGAL::Bbox_2 box;
+  for(const auto& p : city.footprints[yard]) box += p.bbox();
+  std::vector<T::City_sample> lot;
+  for(const T::City_sample& s : city.samples)
+    if(s.point.x() > box.xmin() - 3 && s.point.x() < box.xmax() + 3 && s.point.y() > box.ymin() - 3 &&
+       s.point.y() < box.ymax() + 3)
+      lot.push_back(s);
+  std::vector<Building> buildings;
+  reconstruct(lot, buildings, 1, CGAL::parameters::default_values());
+  assert(buildings.size() == 1);
+  check_valid(buildings, "courtyard");
+  const T::Two_way_distances d = T::two_way_distances(buildings[0].lod22, T::truth_mesh(city.buildings[yard]), 4);
+  std::cout << "courtyard: truth to model max " << d.truth_to_model.max << ", model to truth max "
+            << d.model_to_truth.max << std::endl;
+  assert(d.truth_to_model.max < 1.5 && d.model_to_truth.max < 1.5);
+}
+
 int main()
 {
+  test_courtyard_without_footprints();
   test_solid_defect();
   test_bad_input();
   test_city_without_footprints();

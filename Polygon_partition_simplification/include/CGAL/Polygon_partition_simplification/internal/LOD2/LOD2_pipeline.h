@@ -312,6 +312,8 @@ void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const
       evidence.points.push_back(
         {{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}});
   evidence.cell_of_point = arrangement.locate(evidence.points);
+  // squares of half the planes' distance: the ground of a yard a few metres wide is open above
+  evidence.open_above = open_above(evidence.points, 0.5 * settings.lift.facade_distance, settings.lift.height_threshold);
   if(settings.lift.facade_samples > 0) {
     evidence.facades = facade_evidence<Kernel>(points, planes, settings.lift.facade_distance, settings.lift.facade_samples);
     evidence.cell_in_front = arrangement.locate(evidence.facades.in_front);

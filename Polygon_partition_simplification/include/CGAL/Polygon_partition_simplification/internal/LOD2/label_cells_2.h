@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <utility>
@@ -34,6 +35,12 @@ struct Lift_settings
   /// an edge within this distance of a facade segment is along it; also the step of the facade samples
   double facade_distance = 0.5;
   std::size_t facade_samples = 2;     ///< samples in front of and behind every facade point (0: none)
+  /// a roof label is refuted in a cell when more than this fraction of the cell's points lie
+  /// more than `height_threshold` below its plane
+  double refuting_fraction = 0.25;
+  /// in a cell where a roof label is refuted, a point below its plane costs its depth up to this
+  /// fraction of the plane's height above the ground (instead of `height_threshold`)
+  double refuting_depth = 0.5;
 };
 
 /// An edge of the cell arrangement for the lift: its two cells, its ends, its weight.
@@ -80,9 +87,31 @@ struct Lift_evidence
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::size_t> cell_of_point;
+  std::vector<bool> open_above; // per point, if known: nothing was seen above it (open_above())
   Facade_evidence_3 facades;
   std::vector<std::size_t> cell_in_front, cell_behind;
 };
+
+/// Per point of `points`: whether it is open to the sky as an aerial scan sees it, that is,
+/// within `tolerance` of the highest point of its square of side `step` (a grid in xy). The
+/// ground of a courtyard is; the lower points of a wall, or points under an eave, are not.
+inline std::vector<bool> open_above(const std::vector<std::array<double, 3>>& points, double step, double tolerance)
+{
+  std::vector<bool> result(points.size(), true);
+  if(points.empty() || !(step > 0)) return result;
+  double x0 = points[0][0], y0 = points[0][1];
+  for(const auto& p : points) x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]);
+  auto key = [&](const std::array<double, 3>& p) {
+    return std::make_pair(std::int64_t(std::floor((p[0] - x0) / step)), std::int64_t(std::floor((p[1] - y0) / step)));
+  };
+  std::map<std::pair<std::int64_t, std::int64_t>, double> highest;
+  for(const auto& p : points) {
+    auto [it, inserted] = highest.emplace(key(p), p[2]);
+    if(!inserted) it->second = std::max(it->second, p[2]);
+  }
+  for(std::size_t i = 0; i < points.size(); ++i) result[i] = points[i][2] >= highest.at(key(points[i])) - tolerance;
+  return result;
+}
 
 /// the data term of Eq. 3.1 for every cell and label: the area of the cell times the mean
 /// residual of its evidence, where a point costs its vertical distance to the label's plane, a
@@ -91,29 +120,52 @@ struct Lift_evidence
 /// costs nothing on the ground and `height_threshold * area` on a roof (no evidence of a
 /// building); a roof label whose plane is less than `minimum_building_height` above the ground
 /// at a corner of the cell is forbidden (+infinity).
+///
+/// An aerial scan sees nothing below a roof: when more than `refuting_fraction` of the points of
+/// a cell are open above (`Lift_evidence::open_above`) and lie more than `height_threshold`
+/// below a roof label's plane (a courtyard under the roof of its wings), each of them costs its
+/// depth up to `refuting_depth` times the height of the plane above the ground. The evidence of an open yard then grows with the height of its
+/// walls, as the cost of the walls does (V_e of Eq. 3.2), instead of staying at
+/// `height_threshold` per point, which roofs over every square yard narrower than
+/// 4 `mu` / `height_threshold` times the height of its walls (1.6 times with the default
+/// settings) unless its walls are seen as facades.
 inline std::vector<std::vector<double>> lift_data_term(const Cell_arrangement_2& cells, const Lift_evidence& evidence,
                                                        const Height_functions& heights, const Lift_settings& settings)
 {
   const std::size_t labels = heights.number_of_labels();
   std::vector<std::vector<double>> cost(cells.number_of_cells(), std::vector<double>(labels, 0));
   std::vector<std::size_t> count(cells.number_of_cells(), 0);
-  // `below` and `above` weigh the plane's height below and above the sample
+  // per cell and label: the cost with the points below a roof plane at their depth, and the
+  // number of these points
+  std::vector<std::vector<double>> refuted_cost(cells.number_of_cells(), std::vector<double>(labels, 0));
+  std::vector<std::vector<std::size_t>> refuting(cells.number_of_cells(), std::vector<std::size_t>(labels, 0));
+  // `below` and `above` weigh the plane's height below and above the sample; `points`: the
+  // samples are points seen from above
   auto add = [&](const std::vector<std::array<double, 3>>& samples, const std::vector<std::size_t>& cell_of_sample,
-                 double below, double above) {
+                 double below, double above, bool points) {
     for(std::size_t i = 0; i < samples.size(); ++i) {
       const std::size_t c = cell_of_sample[i];
       if(c == Cell_arrangement_2::no_cell) continue;
       ++count[c];
       const std::array<double, 2> xy{{samples[i][0], samples[i][1]}};
+      const double ground = heights.height(Height_functions::ground_label, xy);
       for(std::size_t l = 0; l < labels; ++l) {
-        const double difference = heights.height(l, xy) - samples[i][2];
-        cost[c][l] += std::min(settings.height_threshold, difference > 0 ? above * difference : -below * difference);
+        const double plane = heights.height(l, xy), difference = plane - samples[i][2];
+        const double residual = difference > 0 ? above * difference : -below * difference;
+        cost[c][l] += std::min(settings.height_threshold, residual);
+        double cap = settings.height_threshold;
+        if(points && !evidence.open_above.empty() && evidence.open_above[i] && l != Height_functions::ground_label &&
+           difference > settings.height_threshold) {
+          cap = std::max(cap, settings.refuting_depth * (plane - ground));
+          ++refuting[c][l];
+        }
+        refuted_cost[c][l] += std::min(cap, residual);
       }
     }
   };
-  add(evidence.points, evidence.cell_of_point, 1, 1);
-  add(evidence.facades.in_front, evidence.cell_in_front, 0, 1);
-  add(evidence.facades.behind, evidence.cell_behind, 1, 0);
+  add(evidence.points, evidence.cell_of_point, 1, 1, true);
+  add(evidence.facades.in_front, evidence.cell_in_front, 0, 1, false);
+  add(evidence.facades.behind, evidence.cell_behind, 1, 0, false);
   for(std::size_t c = 0; c < cells.number_of_cells(); ++c) {
     double area = 0;
     for(const auto& ring : cells.rings[c]) {
@@ -124,6 +176,7 @@ inline std::vector<std::vector<double>> lift_data_term(const Cell_arrangement_2&
       }
     }
     for(std::size_t l = 0; l < labels; ++l) {
+      if(double(refuting[c][l]) > settings.refuting_fraction * double(count[c])) cost[c][l] = refuted_cost[c][l];
       cost[c][l] = count[c] > 0 ? area * cost[c][l] / double(count[c])
                                 : (l == Height_functions::ground_label ? 0 : area * settings.height_threshold);
       for(const auto& ring : cells.rings[c])
