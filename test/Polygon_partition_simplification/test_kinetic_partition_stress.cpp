@@ -69,7 +69,10 @@ void test_duplicates()
   const PPS::Line_partition_2<K> p = CGAL::kinetic_partition_2(doubled, PPS::parameters::report(&report));
   assert(p.is_valid());
   assert(report.segments == 9 && report.equal_segments == 2 && report.overlapping_segments == 2);
-  assert(report.grown_segments == 5 && report.extended_corner_ends == 0 && report.events > 0);
+  // (the left side, extended past the corner (0, 3) to (0, 5), hangs the rectangle on the
+  // bounding rectangle by an edge: an end stopped at a corner of the rectangle goes on to split
+  // the cell around it, so that the extension is kept)
+  assert(report.grown_segments == 5 && report.extended_corner_ends == 1 && report.events > 0);
   const PPS::Line_partition_2<K> q = CGAL::kinetic_partition_2(extended);
   assert(p.number_of_vertices() == q.number_of_vertices() && p.number_of_edges() == q.number_of_edges());
   assert(p.number_of_cells() == q.number_of_cells());
@@ -92,8 +95,9 @@ void test_duplicates()
 
 // The segments that lod2_reconstruct gives to the kinetic partition for CGAL's points_3/hippo2.ply
 // and points_3/sphere_20k_normal.xyz, whose partitions crossed (edges 44 and 495, 1476 and 1658)
-// at the four snapping distances the LOD2 pipeline tried: valid at each, and at the default one,
-// with no end stopped at a corner extended.
+// at the four snapping distances the LOD2 pipeline tried: valid at each, with every input
+// segment covered (an end stopped at a corner splits the cell around a chain of corners that
+// hangs by a piece of a segment: one in hippo2's partition at the default distance).
 void test_lod2_segments()
 {
   const std::pair<const char*, double> files[] = {{"data/lod2_hippo2_segments.txt", 0.0070018595622696709613},
@@ -107,9 +111,8 @@ void test_lod2_segments()
     for(const auto& r : results) {
       if(!r.defect.empty() || !r.normalized_defect.empty()) std::cerr << file << ": " << r.defect << r.normalized_defect << std::endl;
       assert(!r.refused && r.defect.empty() && r.normalized_defect.empty() && r.package_says_valid);
-      if(r.uncovered > 0 || r.extended_corner_ends > 0)
-        std::cerr << file << ": " << r.uncovered << " segments uncovered, " << r.extended_corner_ends << " corner ends extended" << std::endl;
-      assert(r.uncovered == 0 && r.extended_corner_ends == 0);
+      std::cout << file << ": " << r.uncovered << " segments uncovered, " << r.extended_corner_ends << " corner ends extended" << std::endl;
+      assert(r.uncovered == 0);
     }
   }
 }
@@ -124,11 +127,15 @@ int main()
   // 720); invalid before points too close were rounded apart (star 0, 1, 2, 8, 12 and offset 5,
   // 6, 18, 274: points that coincide or edges that cross, with the coordinates the user gets or
   // in the normalized frame); offset 115: a triangle hanging at two points that round together
-  // (the cell around it is pinched once they merge; an end stopped at a corner splits it)
+  // (the cell around it is pinched once they merge; an end stopped at a corner splits it);
+  // star 6492: edges of a point of three nearly parallel lines crossed those of the star's center
+  // (the rounding now splits edges whose double coordinates cross); offset 595 and 5114: a
+  // triangle of corners hanging by an edge, which was dropped with a part of an input segment
+  // (an end stopped at a corner of the triangle now splits the cell)
   for(unsigned long long seed : {0ull, 1ull, 2ull, 3ull, 4ull}) assert(run_generator(Generator::duplicates, seed, 1).first == 0);
   for(unsigned long long seed : {212ull, 720ull}) assert(run_generator(Generator::tiny, seed, 1).first == 0);
-  for(unsigned long long seed : {0ull, 1ull, 2ull, 8ull, 12ull}) assert(run_generator(Generator::star, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
-  for(unsigned long long seed : {5ull, 6ull, 18ull, 115ull, 274ull}) assert(run_generator(Generator::offset, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
+  for(unsigned long long seed : {0ull, 1ull, 2ull, 8ull, 12ull, 6492ull}) assert(run_generator(Generator::star, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
+  for(unsigned long long seed : {5ull, 6ull, 18ull, 115ull, 274ull, 595ull, 5114ull}) assert(run_generator(Generator::offset, seed, 1) == std::make_pair(std::size_t(0), std::size_t(0)));
   // the plan: scenes per generator and the invalid partitions measured on them (0 where the
   // generator has no known defect)
   const Plan plans[] = {{Generator::grid, 800, 0, 0},     {Generator::collinear, 400, 0, 0},

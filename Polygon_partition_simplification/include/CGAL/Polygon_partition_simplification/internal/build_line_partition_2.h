@@ -175,40 +175,58 @@ void accumulate_metrics(std::vector<Line>& lines, const Frame& frame, const std:
   }
 }
 
-// The partition of `lines`, `vertices` and `edges` in canonical order: the lines no edge uses
-// are dropped and the others numbered by decreasing spread of their segment endpoints (which
-// rigid motions and scalings do not change), then by their exact equation (their order in
-// `lines`); the points by their line sets; the edges by (line, points). The numbering, and the
-// order of everything that follows it, depend neither on the order of the input nor on its
-// position.
+// Numbers `lines` by decreasing spread of their segment endpoints (which rigid motions and
+// scalings do not change), then by their exact equation (their order in `lines`), in
+// `vertices` and `edges` too (the lines of each point sorted again, the edges sorted by (line,
+// source, target)). The points of several lines are computed from them in the order of their
+// numbers (see point_of_lines()): with the final numbers from here on, the points that the
+// rounding checks are the points of the result.
+template <class Line, class Vertex, class Edge>
+void number_lines_canonically(std::vector<Line>& lines, std::vector<Vertex>& vertices, std::vector<Edge>& edges)
+{
+  auto spread = [&](std::size_t l) {
+    const Line_metric& m = lines[l].metric;
+    return m(2, 2) > 0 ? m(0, 0) + m(1, 1) - (m(0, 2) * m(0, 2) + m(1, 2) * m(1, 2)) / m(2, 2) : 0.;
+  };
+  std::vector<std::size_t> order(lines.size());
+  for(std::size_t l = 0; l < order.size(); ++l) order[l] = l;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return spread(x) > spread(y); });
+  std::vector<std::size_t> new_line(lines.size());
+  std::vector<Line> sorted;
+  sorted.reserve(lines.size());
+  for(std::size_t l : order) { new_line[l] = sorted.size(); sorted.push_back(lines[l]); }
+  lines.swap(sorted);
+  for(auto& v : vertices) {
+    for(auto& l : v.lines) l = new_line[l];
+    std::sort(v.lines.begin(), v.lines.end());
+  }
+  for(auto& e : edges) e.line = new_line[e.line];
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+    return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
+  });
+}
+
+// The partition of `lines` (numbered by number_lines_canonically()), `vertices` and `edges` in
+// canonical order: the lines no edge uses are dropped (the others keep their order); the points
+// are numbered by their line sets, the edges by (line, points). The numbering, and the order of
+// everything that follows it, depend neither on the order of the input nor on its position.
 template <class Partition>
 Partition canonical_partition(const typename Partition::Frame& frame, const std::vector<typename Partition::Line>& lines,
                               std::vector<typename Partition::Vertex> vertices, std::vector<typename Partition::Edge> edges,
                               const typename Partition::Geom_traits& gt)
 {
-  std::vector<std::size_t> used_lines;
-  {
-    std::vector<bool> used(lines.size(), false);
-    for(const auto& e : edges) used[e.line] = true;
-    for(std::size_t l = 0; l < lines.size(); ++l)
-      if(used[l]) used_lines.push_back(l);
-  }
-  auto spread = [&](std::size_t l) {
-    const Line_metric& m = lines[l].metric;
-    return m(2, 2) > 0 ? m(0, 0) + m(1, 1) - (m(0, 2) * m(0, 2) + m(1, 2) * m(1, 2)) / m(2, 2) : 0.;
-  };
-  std::stable_sort(used_lines.begin(), used_lines.end(),
-                   [&](std::size_t x, std::size_t y) { return spread(x) > spread(y); });
+  std::vector<bool> used(lines.size(), false);
+  for(const auto& e : edges) used[e.line] = true;
   std::vector<std::size_t> new_line(lines.size(), std::size_t(-1));
   std::vector<typename Partition::Line> kept;
-  for(std::size_t l : used_lines) { new_line[l] = kept.size(); kept.push_back(lines[l]); }
+  for(std::size_t l = 0; l < lines.size(); ++l)
+    if(used[l]) { new_line[l] = kept.size(); kept.push_back(lines[l]); }
   for(auto& e : edges) e.line = new_line[e.line];
   // (a point can be on a line left without edges: the only edge of that line at the point
   // collapsed when points that round together merged; the point is then on its other lines)
   for(auto& v : vertices) {
     for(auto& l : v.lines) l = new_line[l];
     v.lines.erase(std::remove(v.lines.begin(), v.lines.end(), std::size_t(-1)), v.lines.end());
-    std::sort(v.lines.begin(), v.lines.end());
   }
   std::vector<std::size_t> order(vertices.size());
   for(std::size_t v = 0; v < order.size(); ++v) order[v] = v;
@@ -277,7 +295,10 @@ build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
   }
   {
     const Point_rounding rounding{frame.center_x, frame.center_y, frame.scale, merge_tolerance(frame)};
-    const std::size_t added = split_pinched_cells<EK>(arrangement, corner_rays, lines.piece_line, rounding);
+    Input_on_line<EK> input_on_line(lines.lines.size());
+    for(std::size_t i = 0; i < metric_segments.size(); ++i)
+      input_on_line[lines.metric_line[i]].push_back(metric_segments[i].segment);
+    const std::size_t added = split_pinched_cells<EK>(arrangement, corner_rays, lines.piece_line, rounding, input_on_line);
     if(extended != nullptr) *extended = added;
   }
   // 3. The fidelity metrics of the lines.
@@ -287,8 +308,10 @@ build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
   prune_dangling_edges(graph);
   Points_and_edges<Partition> parts = points_and_chained_edges<Partition>(graph);
   // 5. Points whose double coordinates come too close to another point or to an edge, merged
-  //    with it or put on it (see merge_rounded_points_2.h).
-  round_points_apart(lines.lines, parts.vertices, parts.edges, merge_tolerance(frame));
+  //    with it or put on it, and edges whose double coordinates cross, split where they do (see
+  //    merge_rounded_points_2.h), with the lines in their final order.
+  number_lines_canonically(lines.lines, parts.vertices, parts.edges);
+  round_points_apart<typename Partition::Geom_traits::Exact_predicates_kernel>(lines.lines, parts.vertices, parts.edges, merge_tolerance(frame));
   // 6. Numbering independent of the input order and position.
   return canonical_partition<Partition>(frame, lines.lines, std::move(parts.vertices), std::move(parts.edges), gt);
 }

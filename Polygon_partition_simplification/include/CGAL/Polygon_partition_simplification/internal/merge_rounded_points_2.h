@@ -11,9 +11,13 @@
 // nearly identical lines; the three intersections of three nearly concurrent lines (a triangle
 // far smaller than the rounding errors of the points computed from the lines). Points that come
 // so close and are joined by an edge are merged, as the collapse of that edge: the merged point
-// is on all their lines (on two sides of the box, it is the corner).
+// is on all their lines (on two sides of the box, it is the corner). A point that comes that
+// close to an edge is put on it, and edges whose double coordinates cross are split where they
+// do, as iterated snap rounding routes segments through the hot pixels of points and
+// intersections.
 
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Segment_grid_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
 
@@ -22,6 +26,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -40,6 +46,16 @@ std::vector<std::array<double, 2>> point_positions(const std::vector<Line>& line
       vertices[v].lines, [&](std::size_t l) -> const Vector_3d& { return lines[l].coefficients; },
       [&](std::size_t l) { return lines[l].is_fixed; });
   return position;
+}
+
+// Sorts `edges` by (line, source, target) and removes the repeated ones.
+template <class Edge>
+void sort_distinct_edges(std::vector<Edge>& edges)
+{
+  auto key = [](const Edge& e) { return std::tie(e.line, e.source, e.target); };
+  std::sort(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) { return key(x) < key(y); });
+  edges.erase(std::unique(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) { return key(x) == key(y); }),
+              edges.end());
 }
 
 // Merges the sets of `sets` (points of `vertices`, each the union of the lines of its
@@ -73,12 +89,7 @@ void apply_point_merges(Union_find<std::size_t>& sets, std::vector<Vertex>& vert
     if(e.source > e.target) std::swap(e.source, e.target);
     remaining.push_back(e);
   }
-  std::sort(remaining.begin(), remaining.end(), [](const Edge& x, const Edge& y) {
-    return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
-  });
-  remaining.erase(std::unique(remaining.begin(), remaining.end(), [](const Edge& x, const Edge& y) {
-                    return std::tie(x.line, x.source, x.target) == std::tie(y.line, y.source, y.target);
-                  }), remaining.end());
+  sort_distinct_edges(remaining);
   vertices.swap(kept);
   edges.swap(remaining);
 }
@@ -141,6 +152,49 @@ void merge_points_that_round_together(const std::vector<Line>& lines, std::vecto
   }
 }
 
+// Splits each edge e at the points of `splits[e]` ((parameter along e, point) pairs, the
+// point not an end of e), in the order of the parameters; each such point gets the edge's line.
+// The edges are sorted again by (line, source, target) and made distinct.
+template <class Vertex, class Edge>
+void split_edges_at_points(std::vector<Vertex>& vertices, std::vector<Edge>& edges,
+                           std::vector<std::vector<std::pair<double, std::size_t>>>& splits)
+{
+  std::vector<Edge> result;
+  for(std::size_t e = 0; e < edges.size(); ++e) {
+    std::sort(splits[e].begin(), splits[e].end());
+    std::size_t from = edges[e].source;
+    for(const auto& [t, v] : splits[e]) {
+      Edge piece = edges[e];
+      piece.source = std::min(from, v);
+      piece.target = std::max(from, v);
+      if(piece.source != piece.target) result.push_back(piece);
+      auto& l = vertices[v].lines;
+      if(!std::binary_search(l.begin(), l.end(), edges[e].line)) l.insert(std::lower_bound(l.begin(), l.end(), edges[e].line), edges[e].line);
+      from = v;
+    }
+    Edge last = edges[e];
+    last.source = std::min(from, edges[e].target);
+    last.target = std::max(from, edges[e].target);
+    if(last.source != last.target) result.push_back(last);
+  }
+  sort_distinct_edges(result);
+  edges.swap(result);
+}
+
+// Where the rounding puts a point onto an edge: `p` within `reach` of the segment from `s` to
+// `t` (double, normalized frame), farther than `margin` from both ends along it. Returns its
+// parameter along the segment (0 at `s`, 1 at `t`), if so.
+inline std::optional<double> parameter_near_segment(const std::array<double, 2>& p, const std::array<double, 2>& s,
+                                                    const std::array<double, 2>& t, double reach, double margin)
+{
+  const double dx = t[0] - s[0], dy = t[1] - s[1], l2 = dx * dx + dy * dy;
+  if(!(l2 > 0)) return std::nullopt;
+  const double along = ((p[0] - s[0]) * dx + (p[1] - s[1]) * dy) / l2, length = std::sqrt(l2);
+  if(!(along * length > margin && (1 - along) * length > margin)) return std::nullopt;
+  if(std::abs(dx * (p[1] - s[1]) - dy * (p[0] - s[0])) > reach * length) return std::nullopt;
+  return along;
+}
+
 // Iterated snap rounding routes a segment through every point that comes within a pixel of it;
 // here, a point that comes within `tolerance` of an edge it does not bound (in double, normalized
 // frame, strictly between the ends of the edge) is put on that edge: the edge is split there and
@@ -174,55 +228,100 @@ bool split_edges_at_close_points(const std::vector<Line>& lines, std::vector<Ver
       grid.for_each_in_ring(x, y, k, [&](std::uint32_t e) {
         if(edges[e].source == v || edges[e].target == v) return;
         const auto& s = segments[e];
-        const double dx = s[2] - s[0], dy = s[3] - s[1], l2 = dx * dx + dy * dy;
-        const double t = ((p[0] - s[0]) * dx + (p[1] - s[1]) * dy) / l2;
-        if(!(t * std::sqrt(l2) > tolerance && (1 - t) * std::sqrt(l2) > tolerance)) return;
-        if(std::abs(dx * (p[1] - s[1]) - dy * (p[0] - s[0])) > tolerance * std::sqrt(l2)) return;
+        const std::optional<double> t = parameter_near_segment(p, {s[0], s[1]}, {s[2], s[3]}, tolerance, tolerance);
+        if(!t) return;
         if(std::find_if(splits[e].begin(), splits[e].end(), [&](const auto& x) { return x.second == v; }) != splits[e].end())
           return; // listed in several cells
-        splits[e].push_back({t, v});
+        splits[e].push_back({*t, v});
         split = true;
       });
   }
   if(!split) return false;
-  std::vector<Edge> result;
+  split_edges_at_points(vertices, edges, splits);
+  return true;
+}
+
+// Iterated snap rounding makes every intersection of the rounded segments a point of the
+// result; here, two edges whose double coordinates meet elsewhere than at a common end (decided
+// with the exact predicates of `PK`) are split where they meet: at the end of one that is on
+// the line of the other, or else at a new point on both their lines. Two edges that leave a
+// common point in the same direction are made consecutive: the nearer of their other ends is
+// put on the farther edge. Returns whether an edge was split; the edges are sorted again.
+template <class PK, class Line, class Vertex, class Edge>
+bool split_edges_at_crossings(const std::vector<Line>& lines, std::vector<Vertex>& vertices, std::vector<Edge>& edges)
+{
+  std::vector<std::array<double, 2>> position = point_positions(lines, vertices);
+  std::vector<std::array<std::size_t, 2>> ends(edges.size());
   for(std::size_t e = 0; e < edges.size(); ++e) {
-    std::sort(splits[e].begin(), splits[e].end());
-    std::size_t from = edges[e].source;
-    for(const auto& [t, v] : splits[e]) {
-      Edge piece = edges[e];
-      piece.source = std::min(from, v);
-      piece.target = std::max(from, v);
-      if(piece.source != piece.target) result.push_back(piece);
-      auto& l = vertices[v].lines;
-      if(!std::binary_search(l.begin(), l.end(), edges[e].line)) l.insert(std::lower_bound(l.begin(), l.end(), edges[e].line), edges[e].line);
-      from = v;
-    }
-    Edge last = edges[e];
-    last.source = std::min(from, edges[e].target);
-    last.target = std::max(from, edges[e].target);
-    if(last.source != last.target) result.push_back(last);
+    ends[e] = {{edges[e].source, edges[e].target}};
+    for(std::size_t v : ends[e])
+      if(!std::isfinite(position[v][0] + position[v][1])) return false; // an invalid partition
   }
-  std::sort(result.begin(), result.end(), [](const Edge& x, const Edge& y) {
-    return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
-  });
-  result.erase(std::unique(result.begin(), result.end(), [](const Edge& x, const Edge& y) {
-                 return std::tie(x.line, x.source, x.target) == std::tie(y.line, y.source, y.target);
-               }), result.end());
-  edges.swap(result);
+  const auto crossings = crossing_edge_pairs<PK>(position, ends, true, [](const auto&, const auto&) { return true; });
+  if(crossings.empty()) return false;
+  std::vector<std::vector<std::pair<double, std::size_t>>> splits(edges.size()); // (parameter, point)
+  auto put_on = [&](std::size_t v, std::size_t e) {
+    const auto& a = position[edges[e].source];
+    const auto& b = position[edges[e].target];
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const double t = ((position[v][0] - a[0]) * dx + (position[v][1] - a[1]) * dy) / (dx * dx + dy * dy);
+    auto& list = splits[e];
+    if(std::find_if(list.begin(), list.end(), [&](const auto& x) { return x.second == v; }) == list.end())
+      list.push_back({t, v});
+  };
+  auto on_line = [&](std::size_t v, std::size_t line) {
+    return std::binary_search(vertices[v].lines.begin(), vertices[v].lines.end(), line);
+  };
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> new_point; // line pair -> point
+  for(const auto& [e, f] : crossings) {
+    if(edges[e].line == edges[f].line) continue; // (distinct edges of a line only meet at ends)
+    std::size_t common = std::size_t(-1), shared = 0;
+    for(std::size_t a : ends[e])
+      for(std::size_t b : ends[f])
+        if(a == b) { common = a; ++shared; }
+    if(shared == 2) continue; // two points joined on two lines: merged, or left (see above)
+    if(shared == 1) {
+      const std::size_t oe = ends[e][0] == common ? ends[e][1] : ends[e][0];
+      const std::size_t of = ends[f][0] == common ? ends[f][1] : ends[f][0];
+      auto d2 = [&](std::size_t v) {
+        return std::pow(position[v][0] - position[common][0], 2) + std::pow(position[v][1] - position[common][1], 2);
+      };
+      if(d2(oe) <= d2(of)) put_on(oe, f); else put_on(of, e);
+      continue;
+    }
+    bool touched = false;
+    for(std::size_t v : ends[f]) if(on_line(v, edges[e].line)) { put_on(v, e); touched = true; }
+    for(std::size_t v : ends[e]) if(on_line(v, edges[f].line)) { put_on(v, f); touched = true; }
+    if(touched) continue;
+    const auto key = std::minmax(edges[e].line, edges[f].line);
+    auto [it, inserted] = new_point.emplace(key, vertices.size());
+    if(inserted) {
+      Vertex v;
+      v.lines = {key.first, key.second};
+      vertices.push_back(v);
+      position.push_back(point_positions(lines, std::vector<Vertex>{v}).front());
+    }
+    put_on(it->second, e);
+    put_on(it->second, f);
+  }
+  split_edges_at_points(vertices, edges, splits);
   return true;
 }
 
 // Points that come closer than `tolerance` (normalized frame, in double) to another point they
-// are joined to, or to an edge they do not bound, are merged with it or put on it, until none
-// does (at most 8 rounds): the rounding of iterated snap rounding, on points computed from lines.
-template <class Line, class Vertex, class Edge>
+// are joined to, or to an edge they do not bound, are merged with it or put on it, and edges
+// that meet elsewhere than at a common end are split where they meet, until none does (at most
+// 8 rounds): the rounding of iterated snap rounding, on points computed from lines. `PK`: the
+// exact predicates kernel of the geometric traits.
+template <class PK, class Line, class Vertex, class Edge>
 void round_points_apart(const std::vector<Line>& lines, std::vector<Vertex>& vertices, std::vector<Edge>& edges,
                         double tolerance)
 {
   for(int round = 0; round < 8; ++round) {
     merge_points_that_round_together(lines, vertices, edges, tolerance);
-    if(!split_edges_at_close_points(lines, vertices, edges, tolerance)) return;
+    if(!split_edges_at_close_points(lines, vertices, edges, tolerance) &&
+       !split_edges_at_crossings<PK>(lines, vertices, edges))
+      return;
   }
   merge_points_that_round_together(lines, vertices, edges, tolerance);
 }

@@ -7,8 +7,10 @@
 // Ends that meet at time 0 stop each other in the kinetic propagation, so that corners stay
 // corners. A closed chain of such corners that touches the rest of the partition at a single
 // point O (an "X" whose two lower ends are joined by a third segment: the triangle hangs at the
-// crossing; two squares sharing a corner) leaves a face of the exact arrangement whose boundary
-// walk passes twice through O: a cell that is not a simple polygon. Such a face is split by
+// crossing; two squares sharing a corner), or hangs on it by a single edge (a bridge, which the
+// walk passes out and back: it arrives twice at the bridge's end O on the chain), leaves a face
+// of the exact arrangement whose boundary walk passes twice through O: a cell that is not a
+// simple polygon. Such a face is split by
 // construction, in the arrangement, before the partition is read from it: one of the ends
 // stopped at a corner of the walk goes on from its corner, straight into the face, to the
 // first point of the face's boundary (as if it grew after every other end had stopped). The
@@ -34,6 +36,7 @@
 // collapses with it); a piece from elsewhere may not end in the group.
 
 #include <CGAL/Polygon_partition_simplification/internal/Piece_arrangement_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/merge_rounded_points_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Union_find.h>
 
 #include <CGAL/Kernel/global_functions_2.h>
@@ -44,6 +47,7 @@
 #include <cstddef>
 #include <optional>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -146,7 +150,6 @@ void passages_along_edges(const std::vector<Halfedge>& walk, typename Piece_arra
     const auto& h = walk[k];
     if(h->twin()->face() == face) continue;
     const std::array<double, 2> s = rounding(h->source()->point()), t = rounding(h->target()->point());
-    const double dx = t[0] - s[0], dy = t[1] - s[1], l2 = dx * dx + dy * dy;
     const std::array<double, 2> low{std::min(s[0], t[0]) - reach, -HUGE_VAL};
     for(auto it = std::lower_bound(points.begin(), points.end(), std::make_pair(low, std::size_t(0)));
         it != points.end() && it->first[0] <= std::max(s[0], t[0]) + reach; ++it) {
@@ -154,63 +157,135 @@ void passages_along_edges(const std::vector<Halfedge>& walk, typename Piece_arra
       if(p[1] < std::min(s[1], t[1]) - reach || p[1] > std::max(s[1], t[1]) + reach) continue;
       const auto v = walk[it->second]->target();
       const std::size_t g = group(v);
-      if(g == group(h->source()) || g == group(h->target()) || !(l2 > 0)) continue;
-      const double along = ((p[0] - s[0]) * dx + (p[1] - s[1]) * dy) / l2;
-      if(!(along > 0 && along < 1)) continue;
-      if(std::abs(dx * (p[1] - s[1]) - dy * (p[0] - s[0])) <= reach * std::sqrt(l2)) arrivals.push_back({g, k});
+      if(g == group(h->source()) || g == group(h->target())) continue;
+      if(parameter_near_segment(p, s, t, reach, 0)) arrivals.push_back({g, k});
     }
   }
 }
 
+// The half-edges (by address) of the antennas of `arrangement`: the trees that hang from the
+// rest of its edges, found by removing the vertices of degree 1 until none is left. An edge with
+// the same face on both sides that is not in an antenna is a bridge between two parts with
+// cycles (a closed chain of corners that hangs on the rest by an edge): the cell is not a simple
+// polygon and the bridge, a piece of an input segment, would be dropped with it.
+template <class EK>
+std::unordered_set<const void*> antenna_halfedges(const Piece_arrangement<EK>& arrangement)
+{
+  std::unordered_map<const void*, std::size_t> degree;
+  std::vector<typename Piece_arrangement<EK>::Vertex_const_handle> leaves;
+  for(auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v) {
+    degree[&*v] = v->degree();
+    if(v->degree() == 1) leaves.push_back(v);
+  }
+  std::unordered_set<const void*> result;
+  while(!leaves.empty()) {
+    const auto v = leaves.back();
+    leaves.pop_back();
+    auto h = v->incident_halfedges(); // halfedges into v
+    const auto first = h;
+    do {
+      if(!result.count(&*h)) {
+        result.insert(&*h);
+        result.insert(&*h->twin());
+        const auto u = h->source();
+        if(--degree[&*u] == 1) leaves.push_back(u);
+      }
+    } while(++h != first);
+  }
+  return result;
+}
+
+// The input segments of a partition by line (`input_on_line[l]`: those on line l), whose parts
+// are to stay edges of the partition, as opposed to the extents that only grew from them.
+template <class EK>
+using Input_on_line = std::vector<std::vector<typename EK::Segment_2>>;
+
+// Whether the edge of `h` overlaps an input segment of its line (with a positive length).
+template <class EK, class Halfedge>
+bool overlaps_input(const Halfedge& h, const Input_on_line<EK>& input_on_line)
+{
+  const std::size_t line = h->curve().data().front();
+  if(line >= input_on_line.size()) return false;
+  auto sorted = [](const typename EK::Point_2& a, const typename EK::Point_2& b) {
+    return CGAL::compare_xy(a, b) == CGAL::SMALLER ? std::make_pair(a, b) : std::make_pair(b, a);
+  };
+  const auto [p, q] = sorted(h->source()->point(), h->target()->point());
+  for(const auto& s : input_on_line[line]) {
+    const auto [a, b] = sorted(s.source(), s.target()); // on the same line: ordered along it
+    if(CGAL::compare_xy(p, b) == CGAL::SMALLER && CGAL::compare_xy(a, q) == CGAL::SMALLER) return true;
+  }
+  return false;
+}
+
 // The walk of the boundary component `ccb` of `face` (`component`: see above), if it is pinched.
-// Only the half-edges between two groups with another face on their other side count as
-// passages (an antenna's tip and its base are passed on the way out and back; an edge within a
-// group collapses).
-template <class EK, class Circulator>
+// Only the half-edges between two groups count as passages (an edge within a group collapses),
+// and only those with another face on their other side (an antenna's tip and its base are
+// passed on the way out and back); a walk pinched nowhere else is pinched at a bridge that
+// overlaps an input segment when it passes one (`is_input_bridge(h)`). The pinches at points go
+// first: the piece that splits one of them often ends a bridge too (the bridge left by a piece
+// that joined a hole to the walk). A bridge that is only an extent's extension is left to be
+// dropped with the other edges that bound no cell.
+template <class EK, class Circulator, class IsInputBridge>
 std::optional<Pinched_walk<EK>> pinched_walk(typename Piece_arrangement<EK>::Face_const_handle face, Circulator ccb,
                                             std::size_t component, const Vertex_groups<EK>& group,
-                                            const Point_rounding& rounding)
+                                            const Point_rounding& rounding, const IsInputBridge& is_input_bridge)
 {
-  Pinched_walk<EK> w;
-  w.face = face;
-  w.component = component;
-  std::vector<std::pair<std::size_t, std::size_t>> arrivals; // group, position
+  std::vector<typename Piece_arrangement<EK>::Halfedge_const_handle> walk;
   Circulator c = ccb;
-  do {
-    if(c->twin()->face() != face && group(c->source()) != group(c->target()))
-      arrivals.push_back({group(c->target()), w.walk.size()});
-    w.walk.push_back(c);
-  } while(++c != ccb);
-  passages_along_edges<EK>(w.walk, face, group, rounding, arrivals);
-  std::sort(arrivals.begin(), arrivals.end());
-  for(std::size_t k = 1; k < arrivals.size(); ++k)
-    if(arrivals[k].first == arrivals[k - 1].first) {
-      if(w.pinches.empty()) { w.first = arrivals[k - 1].second; w.second = arrivals[k].second; }
-      if(w.pinches.empty() || w.pinches.back() != arrivals[k].first) w.pinches.push_back(arrivals[k].first);
-      if(arrivals[k].second != arrivals[k - 1].second &&
-         w.walk[arrivals[k].second]->target() == w.walk[arrivals[k - 1].second]->target())
-        w.passed_twice.push_back(w.walk[arrivals[k].second]->target());
+  do walk.push_back(c); while(++c != ccb);
+  const bool passes_a_bridge = std::any_of(walk.begin(), walk.end(), [&](const auto& h) {
+    return h->twin()->face() == face && is_input_bridge(h);
+  });
+  for(const bool bridges : {false, true}) {
+    if(bridges && !passes_a_bridge) break;
+    Pinched_walk<EK> w;
+    w.face = face;
+    w.component = component;
+    w.walk = walk;
+    std::vector<std::pair<std::size_t, std::size_t>> arrivals; // group, position
+    for(std::size_t k = 0; k < walk.size(); ++k) {
+      const auto& h = walk[k];
+      const bool passage = h->twin()->face() != face || (bridges && is_input_bridge(h));
+      if(passage && group(h->source()) != group(h->target())) arrivals.push_back({group(h->target()), k});
     }
-  if(w.pinches.empty()) return std::nullopt;
-  if(w.first > w.second) std::swap(w.first, w.second);
-  for(const auto& h : w.walk)
-    if(std::find(w.pinches.begin(), w.pinches.end(), group(h->target())) != w.pinches.end())
-      w.pinch_points.push_back(rounding(h->target()->point()));
-  return w;
+    passages_along_edges<EK>(w.walk, face, group, rounding, arrivals);
+    std::sort(arrivals.begin(), arrivals.end());
+    for(std::size_t k = 1; k < arrivals.size(); ++k)
+      if(arrivals[k].first == arrivals[k - 1].first) {
+        if(w.pinches.empty()) { w.first = arrivals[k - 1].second; w.second = arrivals[k].second; }
+        if(w.pinches.empty() || w.pinches.back() != arrivals[k].first) w.pinches.push_back(arrivals[k].first);
+        if(arrivals[k].second != arrivals[k - 1].second &&
+           w.walk[arrivals[k].second]->target() == w.walk[arrivals[k - 1].second]->target())
+          w.passed_twice.push_back(w.walk[arrivals[k].second]->target());
+      }
+    if(w.pinches.empty()) continue;
+    if(w.first > w.second) std::swap(w.first, w.second);
+    for(const auto& h : w.walk)
+      if(std::find(w.pinches.begin(), w.pinches.end(), group(h->target())) != w.pinches.end())
+        w.pinch_points.push_back(rounding(h->target()->point()));
+    return w;
+  }
+  return std::nullopt;
 }
 
 // The pinched walks of the bounded faces of `arrangement`.
 template <class EK>
 std::vector<Pinched_walk<EK>> pinched_walks(const Piece_arrangement<EK>& arrangement, const Vertex_groups<EK>& group,
-                                            const Point_rounding& rounding)
+                                            const Point_rounding& rounding, const Input_on_line<EK>& input_on_line)
 {
   std::vector<Pinched_walk<EK>> result;
+  std::optional<std::unordered_set<const void*>> antennas; // found when first needed
+  auto is_input_bridge = [&](const auto& h) {
+    if(!overlaps_input<EK>(h, input_on_line)) return false;
+    if(!antennas) antennas = antenna_halfedges(arrangement);
+    return antennas->count(&*h) == 0;
+  };
   for(auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) {
     if(f->is_unbounded()) continue;
-    if(auto w = pinched_walk<EK>(f, f->outer_ccb(), 0, group, rounding)) result.push_back(std::move(*w));
+    if(auto w = pinched_walk<EK>(f, f->outer_ccb(), 0, group, rounding, is_input_bridge)) result.push_back(std::move(*w));
     std::size_t component = 1;
     for(auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end(); ++hole, ++component)
-      if(auto w = pinched_walk<EK>(f, *hole, component, group, rounding)) result.push_back(std::move(*w));
+      if(auto w = pinched_walk<EK>(f, *hole, component, group, rounding, is_input_bridge)) result.push_back(std::move(*w));
   }
   return result;
 }
@@ -299,10 +374,12 @@ piece_from(const Pinched_walk<EK>& w, std::size_t position, const Corner_ray<EK>
 
 // Splits the pinched faces of `arrangement` with pieces from the ends of `rays` (see above),
 // each on the line `piece_line[ray.piece]`, while a face is pinched and some end splits it or
-// joins it to a hole (each end is used once). Returns the number of pieces added.
+// joins it to a hole (each end is used once). `input_on_line`: the input segments by line (see
+// Input_on_line). Returns the number of pieces added.
 template <class EK>
 std::size_t split_pinched_cells(Piece_arrangement<EK>& arrangement, const std::vector<Corner_ray<EK>>& rays,
-                                const std::vector<std::size_t>& piece_line, const Point_rounding& rounding)
+                                const std::vector<std::size_t>& piece_line, const Point_rounding& rounding,
+                                const Input_on_line<EK>& input_on_line)
 {
   if(rays.empty()) return 0;
   std::vector<std::size_t> by_origin(rays.size()); // the rays by origin, to find those at a vertex
@@ -336,7 +413,7 @@ std::size_t split_pinched_cells(Piece_arrangement<EK>& arrangement, const std::v
   for(bool again = true; again;) {
     again = false;
     const Vertex_groups<EK> group(arrangement, rounding);
-    for(const Pinched_walk<EK>& w : pinched_walks<EK>(arrangement, group, rounding)) {
+    for(const Pinched_walk<EK>& w : pinched_walks<EK>(arrangement, group, rounding, input_on_line)) {
       const auto chosen = piece_for(w, group);
       if(!chosen) continue; // not split here (see the manual's known limits)
       const Corner_ray<EK>& ray = rays[chosen->first];
