@@ -97,7 +97,8 @@ void test_duplicates()
 // and points_3/sphere_20k_normal.xyz, whose partitions crossed (edges 44 and 495, 1476 and 1658)
 // at the four snapping distances the LOD2 pipeline tried: valid at each, with every input
 // segment covered (an end stopped at a corner splits the cell around a chain of corners that
-// hangs by a piece of a segment: one in hippo2's partition at the default distance).
+// hangs by a piece of a segment: one in hippo2's partitions at the default distance and at two
+// of the four others).
 void test_lod2_segments()
 {
   const std::pair<const char*, double> files[] = {{"data/lod2_hippo2_segments.txt", 0.0070018595622696709613},

@@ -263,8 +263,9 @@ bool split_edges_at_crossings(const std::vector<Line>& lines, std::vector<Vertex
   auto put_on = [&](std::size_t v, std::size_t e) {
     const auto& a = position[edges[e].source];
     const auto& b = position[edges[e].target];
-    const double dx = b[0] - a[0], dy = b[1] - a[1];
-    const double t = ((position[v][0] - a[0]) * dx + (position[v][1] - a[1]) * dy) / (dx * dx + dy * dy);
+    const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+    // (an edge whose ends round to one point gets parameter 0, not a NaN that would break the sort)
+    const double t = l2 > 0 ? ((position[v][0] - a[0]) * dx + (position[v][1] - a[1]) * dy) / l2 : 0.;
     auto& list = splits[e];
     if(std::find_if(list.begin(), list.end(), [&](const auto& x) { return x.second == v; }) == list.end())
       list.push_back({t, v});
@@ -299,7 +300,7 @@ bool split_edges_at_crossings(const std::vector<Line>& lines, std::vector<Vertex
       Vertex v;
       v.lines = {key.first, key.second};
       vertices.push_back(v);
-      position.push_back(point_positions(lines, std::vector<Vertex>{v}).front());
+      position.push_back(point_positions(lines, std::vector<Vertex>{v}).front()); // its lines' meet
     }
     put_on(it->second, e);
     put_on(it->second, f);
