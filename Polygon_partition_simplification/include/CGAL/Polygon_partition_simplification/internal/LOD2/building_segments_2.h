@@ -107,10 +107,13 @@ bool intersection_segment(const std::vector<typename Kernel::Point_3>& points, c
 /// the 2D segments of a building scene (section 3.2.1): the intersections of adjacent planes
 /// (a facade with a roof or the ground, two roofs), and the outlines of the roofs' points,
 /// which give the walls that aerial scans hardly see; intersections of the ground with a
-/// non-vertical plane are left out (their contacts are noise), and so are the pieces of an
+/// non-vertical plane are left out (their contacts are noise), and so are the parts of an
 /// outline along an intersection of its plane (the intersection is where the two planes meet;
-/// the outlines of both stop short of it, and would leave a strip between them); the outlines
-/// then follow the facades (`align_outlines_with_facades()`)
+/// the outlines of both stop short of it, and would leave a strip between them). Of an outline
+/// piece that runs along intersections (`runs_along()`), the parts beyond their ends stay
+/// (`parts_not_along()`): where an intersection is shorter than the roof's side (few contacts
+/// near a gable wall, or a wall that continues past a lower roof beside it), they carry the
+/// line to the roof's end. The outlines then follow the facades (`align_outlines_with_facades()`)
 template <class Kernel>
 std::vector<Building_segment_2<Kernel>> building_segments(const std::vector<typename Kernel::Point_3>& points,
                                                           const Building_planes_3<Kernel>& planes,
@@ -139,12 +142,20 @@ std::vector<Building_segment_2<Kernel>> building_segments(const std::vector<type
                                                           settings.outline_tolerance, settings.minimum_length)) {
       const std::array<double, 2> a{{CGAL::to_double(piece.source().x()), CGAL::to_double(piece.source().y())}};
       const std::array<double, 2> b{{CGAL::to_double(piece.target().x()), CGAL::to_double(piece.target().y())}};
-      if(runs_along(a, b, meetings, settings.maximum_distance)) continue;
-      Building_segment_2<Kernel> segment;
-      segment.segment = piece;
-      segment.is_facade = true;
-      segment.first_plane = segment.second_plane = p;
-      segments.push_back(segment);
+      const std::vector<std::array<double, 2>> parts =
+        runs_along(a, b, meetings, settings.maximum_distance)
+          ? parts_not_along(a, b, meetings, settings.maximum_distance, settings.minimum_length)
+          : std::vector<std::array<double, 2>>{{{0., 1.}}};
+      for(const auto& part : parts) {
+        Building_segment_2<Kernel> segment;
+        auto at = [&](double t) {
+          return typename Kernel::Point_2(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]));
+        };
+        segment.segment = part[0] == 0 && part[1] == 1 ? piece : typename Kernel::Segment_2(at(part[0]), at(part[1]));
+        segment.is_facade = true;
+        segment.first_plane = segment.second_plane = p;
+        segments.push_back(segment);
+      }
     }
   }
   align_outlines_with_facades<Kernel>(points, planes, segments, settings.alignment_angle, settings.alignment_distance);

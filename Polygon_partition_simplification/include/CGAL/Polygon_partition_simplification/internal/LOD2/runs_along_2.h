@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_partition_simplification {
@@ -43,6 +44,51 @@ bool runs_along(const std::array<double, 2>& a, const std::array<double, 2>& b,
     }
   }
   return near >= 2;
+}
+
+/// the parts of the segment (a, b), as parameter intervals [t0, t1] of a + t (b - a), that do
+/// not run along `segments`: a segment at less than 15 degrees from it covers the part of (a,
+/// b) over its own extent (widened by `distance` at both ends) if the middle of that part is
+/// within `distance` of it; parts shorter than `minimum_length` are left out
+template <class Segment2Range>
+std::vector<std::array<double, 2>> parts_not_along(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                                                   const Segment2Range& segments, double distance,
+                                                   double minimum_length)
+{
+  const double dx = b[0] - a[0], dy = b[1] - a[1];
+  const double length = std::sqrt(dx * dx + dy * dy);
+  std::vector<std::array<double, 2>> covered;
+  if(length == 0) return covered;
+  for(const auto& s : segments) {
+    const std::array<double, 2> p{{CGAL::to_double(s.source().x()), CGAL::to_double(s.source().y())}};
+    const std::array<double, 2> q{{CGAL::to_double(s.target().x()), CGAL::to_double(s.target().y())}};
+    const double ex = q[0] - p[0], ey = q[1] - p[1];
+    const double squared = ex * ex + ey * ey;
+    if(squared == 0 || std::abs(ex * dy - ey * dx) > std::sin(15 * CGAL_PI / 180) * std::sqrt(squared) * length)
+      continue;
+    auto along = [&](const std::array<double, 2>& r) { return ((r[0] - a[0]) * dx + (r[1] - a[1]) * dy) / (length * length); };
+    const double widen = distance / length;
+    const double t0 = std::max(0.0, std::min(along(p), along(q)) - widen);
+    const double t1 = std::min(1.0, std::max(along(p), along(q)) + widen);
+    if(!(t0 < t1)) continue;
+    const double t = 0.5 * (t0 + t1);
+    const std::array<double, 2> middle{{a[0] + t * dx, a[1] + t * dy}};
+    const double u = std::clamp(((middle[0] - p[0]) * ex + (middle[1] - p[1]) * ey) / squared, 0.0, 1.0);
+    const double gx = p[0] + u * ex - middle[0], gy = p[1] + u * ey - middle[1];
+    if(gx * gx + gy * gy <= distance * distance) covered.push_back({{t0, t1}});
+  }
+  std::sort(covered.begin(), covered.end());
+  std::vector<std::array<double, 2>> parts;
+  double from = 0;
+  auto keep = [&](double t0, double t1) {
+    if((t1 - t0) * length >= minimum_length) parts.push_back({{t0, t1}});
+  };
+  for(const auto& interval : covered) {
+    if(interval[0] > from) keep(from, interval[0]);
+    from = std::max(from, interval[1]);
+  }
+  if(from < 1) keep(from, 1);
+  return parts;
 }
 
 } // namespace internal
