@@ -301,9 +301,8 @@ void test_building_of_tile(const T::City& city, std::size_t index, const std::st
 //   yard over (the truth 4.7 m from the model) until points far below a roof plane refuted it;
 // - 58, stepped: the wall of its main part continues 3.7 m past the lower annex at one end.
 //   The roof outline along that wall runs along the intersection of the main roof with the wall
-//   above the annex and was dropped whole; the wall's line then stopped at the annex, and the
-//   model's main part grew 5.2 m past the truth (6.19 m). The outline's part beyond the
-//   intersection now stays.
+//   above the annex; dropped whole, it leaves the wall's line stopped at the annex, and the
+//   model's main part 5.2 m past the truth (6.19 m). Its part beyond the intersection stays.
 void test_buildings_without_footprints()
 {
   T::City_options options;

@@ -56,7 +56,8 @@ it, projected to the ground plane and marked as a facade when one plane is verti
 is not; and, since aerial scans see few walls, the outline of each roof plane's points (a
 regularized alpha shape, simplified by Douglas-Peucker), marked as facades, without the parts
 that run along an intersection of the plane (within `maximum_distance`, over the intersection's
-extent). The outline pieces within 5 degrees of the direction of a facade plane (or of its normal) take that direction, and
+extent; parts beyond it shorter than 8 times the spacing are left out too). The outline pieces
+within 5 degrees of the direction of a facade plane (or of its normal) take that direction, and
 those then within twice the spacing of one line (a facade's, or each other's) are put on it.
 
 \param points the points given to `detect_building_planes_3()`
@@ -81,9 +82,7 @@ reconstructs LOD2 building models from a point cloud of buildings and the ground
 (`building_segments_2()`), their kinetic partition (`kinetic_partition_2()`), its simplification
 (`simplify_polygon_partition_2()`), the lift of the cells and the extrusion. The named parameters
 of `kinetic_partition_2()` and `simplify_polygon_partition_2()` are passed on; unless given,
-`collinearity_distance` is twice the average spacing and `crossing_distance` the average spacing
-(the pieces of a roof outline stop each other at its corners; the crossings carry a ridge or the
-side of a lower roof past a corner piece to the line that closes its cell).
+`collinearity_distance` is twice the average spacing.
 
 <b>Lift</b> (section 3.2.3). Every cell of the simplified partition gets a label: the ground or
 a roof plane (a detected plane neither vertical nor the ground), minimizing

@@ -354,33 +354,20 @@ std::vector<typename Kernel::Segment_2> distinct_segments(const std::vector<Buil
   return result;
 }
 
-/// the kinetic partition of the segments, computed once, with two defaults of the pipeline for
-/// the parameters the user leaves out: the segments within twice the spacing of the line of a
-/// longer one are moved onto it (`collinearity_distance`), so that the outlines of two roofs that
-/// meet at a step (without an intersection line between them) share their edge instead of
-/// leaving a strip of ground between them; and a growing end crosses a segment whose next
-/// intersection is closer than the spacing (`crossing_distance`, the rule the thesis found
-/// "particularly useful", section 3.2.2): the pieces of a roof outline meet at corners and stop
-/// each other there, so a side of a lower roof whose corner lies a few centimetres from the wall
-/// beside it, or a ridge stopped by a corner piece an eave's width from the gable wall, ends
-/// short of the line that closes its cell, and one cell then spans the ground and a roof, or
-/// both sides of a ridge. A partition that `defect()` refuses (none over the stress scenes of the
-/// manual) is a defect of the package: it throws `std::logic_error` rather than model on it.
+/// the kinetic partition of the segments, computed once; unless the user sets
+/// `collinearity_distance`, the segments within twice the spacing of the line of a longer one
+/// are moved onto it, so that the outlines of two roofs that meet at a step (without an
+/// intersection line between them) share their edge instead of leaving a strip of ground between
+/// them. A partition that `defect()` refuses (none over the stress scenes of the manual) is a
+/// defect of the package: it throws `std::logic_error` rather than model on it.
 template <class Segment_2, class NamedParameters>
 auto kinetic_partition_of_segments(const std::vector<Segment_2>& segments, double spacing, const NamedParameters& np)
 {
-  auto with_crossing_distance = [&](const auto& named) {
-    using Named = std::decay_t<decltype(named)>;
-    if constexpr(parameters::is_default_parameter<Named, internal_np::crossing_distance_t>::value)
-      return CGAL::kinetic_partition_2(segments, parameters::crossing_distance(spacing, named));
-    else
-      return CGAL::kinetic_partition_2(segments, named);
-  };
   auto partition = [&] {
     if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::collinearity_distance_t>::value)
-      return with_crossing_distance(parameters::collinearity_distance(2 * spacing, np));
+      return CGAL::kinetic_partition_2(segments, parameters::collinearity_distance(2 * spacing, np));
     else
-      return with_crossing_distance(np);
+      return CGAL::kinetic_partition_2(segments, np);
   }();
   const std::string defect = partition.defect();
   if(!defect.empty())

@@ -111,9 +111,11 @@ bool intersection_segment(const std::vector<typename Kernel::Point_3>& points, c
 /// outline along an intersection of its plane (the intersection is where the two planes meet;
 /// the outlines of both stop short of it, and would leave a strip between them). Of an outline
 /// piece that runs along intersections (`runs_along()`), the parts beyond their ends stay
-/// (`parts_not_along()`): where an intersection is shorter than the roof's side (few contacts
-/// near a gable wall, or a wall that continues past a lower roof beside it), they carry the
-/// line to the roof's end. The outlines then follow the facades (`align_outlines_with_facades()`)
+/// (`parts_not_along()`) when they are at least twice the shortest segment long: where a wall
+/// continues past a lower roof beside it, its intersection with the higher roof ends at the
+/// lower roof, and these parts carry its line to the roof's end (shorter parts, near the gable
+/// walls where an intersection has few contacts, would stop a ridge short of the wall). The
+/// outlines then follow the facades (`align_outlines_with_facades()`)
 template <class Kernel>
 std::vector<Building_segment_2<Kernel>> building_segments(const std::vector<typename Kernel::Point_3>& points,
                                                           const Building_planes_3<Kernel>& planes,
@@ -144,7 +146,7 @@ std::vector<Building_segment_2<Kernel>> building_segments(const std::vector<type
       const std::array<double, 2> b{{CGAL::to_double(piece.target().x()), CGAL::to_double(piece.target().y())}};
       const std::vector<std::array<double, 2>> parts =
         runs_along(a, b, meetings, settings.maximum_distance)
-          ? parts_not_along(a, b, meetings, settings.maximum_distance, settings.minimum_length)
+          ? parts_not_along(a, b, meetings, settings.maximum_distance, 2 * settings.minimum_length)
           : std::vector<std::array<double, 2>>{{{0., 1.}}};
       for(const auto& part : parts) {
         Building_segment_2<Kernel> segment;
