@@ -66,17 +66,15 @@ plane_contacts(const std::vector<typename Kernel::Point_3>& points, const std::v
   return contacts;
 }
 
-/// the parameters, along `line` (its point 0 and unit direction), of the part where the points
-/// of plane `a` and those of plane `b` within `distance` of it both extend; empty (first > last)
-/// when they do not overlap
+/// the parameters, along `line` (of point `origin` and unit vector `direction`), of the part
+/// where the points of plane `a` and those of plane `b` within `distance` of it both extend;
+/// empty (first > last) when they do not overlap
 template <class Kernel>
 std::array<double, 2> span_of_both_planes(const std::vector<typename Kernel::Point_3>& points,
                                           const Building_planes_3<Kernel>& planes, std::size_t a, std::size_t b,
-                                          const typename Kernel::Line_3& line, double distance)
+                                          const typename Kernel::Line_3& line, const typename Kernel::Point_3& origin,
+                                          const typename Kernel::Vector_3& direction, double distance)
 {
-  const auto origin = line.point(0);
-  auto direction = line.to_vector();
-  direction = direction / std::sqrt(CGAL::to_double(direction.squared_length()));
   std::array<double, 2> both{{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
   for(std::size_t plane : {a, b}) {
     double first = std::numeric_limits<double>::infinity(), last = -first;
@@ -127,7 +125,8 @@ bool intersection_segment(const std::vector<typename Kernel::Point_3>& points, c
   }
   const auto is_roof = [&planes](std::size_t plane) { return plane != planes.ground && !planes.planes[plane].is_vertical; };
   if(is_roof(a) && is_roof(b)) {
-    const std::array<double, 2> both = span_of_both_planes<Kernel>(points, planes, a, b, *line, settings.maximum_distance);
+    const std::array<double, 2> both = span_of_both_planes<Kernel>(points, planes, a, b, *line, origin, direction,
+                                                                           settings.maximum_distance);
     low = std::min(low, both[0]);
     high = std::max(high, both[1]);
   }
