@@ -76,7 +76,7 @@ double double_of(const NT& x)
     const auto& i = x.approx();
     if(i.inf() == i.sup()) return i.inf();
     return nearest_double_of_exact(x.exact());
-  } else if constexpr(bool(CGAL::Algebraic_structure_traits<NT>::Is_exact::value))
+  } else if constexpr(std::is_same<typename CGAL::Algebraic_structure_traits<NT>::Is_exact, CGAL::Tag_true>::value)
     return nearest_double_of_exact(x);
   else
     return CGAL::to_double(x);
