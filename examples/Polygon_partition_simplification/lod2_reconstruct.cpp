@@ -26,6 +26,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
 #include <CGAL/Lex_optimal_chains/IO/read_las_points.h>
+#include <CGAL/Lex_optimal_chains/internal/PLY_structure_check.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
 #include <CGAL/Polygon_partition_simplification/internal/CGAL_compatibility.h>
 #include <CGAL/Polygon_with_holes_2.h>
@@ -34,6 +35,7 @@
 #include <CGAL/lod2_city_reconstruction.h>
 
 #include "City_building_bytes.h"
+#include "GeoJSON_footprints.h"
 #include "Process_group.h"
 
 #include <CLI/CLI.hpp>
@@ -67,6 +69,10 @@ static Point_set read_points(const std::string& input)
     throw std::runtime_error("INPUT must be a .ply, .xyz, .off or .las point cloud: " + input);
   std::ifstream probe(input);
   if(!probe) throw std::runtime_error("cannot read " + input);
+  // a PLY file that CGAL's reader cannot read safely (a property before any element, counts
+  // the data cannot hold, coordinates and normals not all float or all double) is refused first
+  if(ends_with(input, ".ply"))
+    CGAL::Lex_optimal_chains::internal::check_PLY_structure(input, {"x", "y", "z", "nx", "ny", "nz"}, true);
   Point_set points;
   // CGAL's readers report a bad line on std::cerr: it is kept out of the one-line reason
   std::ostringstream reader_messages;
@@ -200,52 +206,12 @@ static std::pair<std::vector<int>, std::vector<int>> parse_classes(const std::st
 
 using Polygon_with_holes = CGAL::Polygon_with_holes_2<K>;
 
-// a GeoJSON ring: [[x, y], ...], closed (the last position repeats the first), which is dropped
-static CGAL::Polygon_2<K> ring_of(const nlohmann::json& ring, const std::string& where)
-{
-  CGAL::Polygon_2<K> polygon;
-  if(!ring.is_array() || ring.size() < 4) throw std::runtime_error(where + ": a ring needs at least 4 positions");
-  for(std::size_t i = 0; i + 1 < ring.size(); ++i) {
-    const auto& position = ring[i];
-    if(!position.is_array() || position.size() < 2 || !position[0].is_number() || !position[1].is_number())
-      throw std::runtime_error(where + ": a position is not [x, y]");
-    polygon.push_back(K::Point_2(position[0].get<double>(), position[1].get<double>()));
-  }
-  if(ring.front() != ring.back()) throw std::runtime_error(where + ": a ring is not closed (its last position is not its first)");
-  return polygon;
-}
-
 // the polygons of a GeoJSON FeatureCollection (Polygon and MultiPolygon features), in file order
 static std::vector<Polygon_with_holes> read_footprints(const std::string& path)
 {
   std::ifstream in(path);
   if(!in) throw std::runtime_error("cannot read the footprints " + path);
-  nlohmann::json document;
-  try {
-    in >> document;
-  } catch(const std::exception&) {
-    throw std::runtime_error("the footprints " + path + " are not JSON");
-  }
-  if(!document.is_object() || document.value("type", "") != "FeatureCollection" || !document["features"].is_array())
-    throw std::runtime_error("the footprints " + path + " are not a GeoJSON FeatureCollection");
-  std::vector<Polygon_with_holes> footprints;
-  auto add_polygon = [&](const nlohmann::json& rings, const std::string& where) {
-    if(!rings.is_array() || rings.empty()) throw std::runtime_error(where + ": a polygon has no ring");
-    Polygon_with_holes polygon(ring_of(rings[0], where));
-    for(std::size_t r = 1; r < rings.size(); ++r) polygon.add_hole(ring_of(rings[r], where));
-    footprints.push_back(std::move(polygon));
-  };
-  for(std::size_t f = 0; f < document["features"].size(); ++f) {
-    const auto& geometry = document["features"][f]["geometry"];
-    const std::string where = path + ", feature " + std::to_string(f);
-    const std::string type = geometry.is_object() ? geometry.value("type", "") : "";
-    if(type == "Polygon") add_polygon(geometry["coordinates"], where);
-    else if(type == "MultiPolygon" && geometry["coordinates"].is_array())
-      for(const auto& polygon : geometry["coordinates"]) add_polygon(polygon, where);
-    else throw std::runtime_error(where + ": its geometry is not a Polygon or a MultiPolygon");
-  }
-  if(footprints.empty()) throw std::runtime_error("no footprint in " + path);
-  return footprints;
+  return lod2_reconstruct::read_GeoJSON_footprints<K>(in, path);
 }
 
 using City_building = PPS::City_building<K::Point_3>;

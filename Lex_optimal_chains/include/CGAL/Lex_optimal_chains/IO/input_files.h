@@ -13,6 +13,7 @@
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 #include <CGAL/Lex_optimal_chains/IO/read_las_points.h>
 #include <CGAL/Lex_optimal_chains/internal/Declared_counts.h>
+#include <CGAL/Lex_optimal_chains/internal/PLY_structure_check.h>
 
 #include <CGAL/IO/read_points.h>
 
@@ -85,6 +86,7 @@ void for_each_point_in_file(const std::string& path, const std::vector<int>& cla
     throw Input_error(Input_error_code::UNREADABLE_FILE, "classes are read from LAS files only, not from '" + path + "'");
   if(!std::filesystem::is_regular_file(path))
     throw Input_error(Input_error_code::UNREADABLE_FILE, "cannot open input '" + path + "'");
+  if(extension == ".ply") internal::check_PLY_structure(path, {"x", "y", "z"}); // read as double
   std::ostringstream reader_messages;
   std::streambuf* saved = std::cerr.rdbuf(reader_messages.rdbuf());
   bool read = false;

@@ -107,9 +107,11 @@ void for_each_las_record(const std::string& path, const Function& f)
   in.seekg(data_offset);
   const std::size_t class_offset = format <= 5 ? 15 : 16;
   const unsigned class_mask = format <= 5 ? 0x1F : 0xFF;
-  std::vector<unsigned char> buffer(std::size_t(record_length) * 65536);
+  // records read in chunks of at most 4 MB (a record can be 65,535 bytes long)
+  const std::uint64_t chunk = std::max<std::uint64_t>(1, std::min<std::uint64_t>(count, (std::uint64_t(1) << 22) / record_length));
+  std::vector<unsigned char> buffer(std::size_t(chunk * record_length));
   for(std::uint64_t done = 0; done < count;) {
-    const std::uint64_t n = std::min<std::uint64_t>(65536, count - done);
+    const std::uint64_t n = std::min<std::uint64_t>(chunk, count - done);
     in.read(reinterpret_cast<char*>(buffer.data()), std::streamsize(n * record_length));
     if(std::uint64_t(in.gcount()) != n * record_length) throw fail("cannot read the points");
     for(std::uint64_t i = 0; i < n; ++i) {
