@@ -11,7 +11,10 @@
 #                                     against Debian's CGAL 5.5.1; then the tests of both packages
 #                                     again against CGAL 6.0.1 (Debian 13's
 #                                     libcgal-dev, unpacked into build/cgal6 by
-#                                     scripts/fetch_cgal6.sh, never installed), in build-cgal6/
+#                                     scripts/fetch_cgal6.sh, never installed), in build-cgal6/;
+#                                     then each fuzz harness of a reader for 20 s (scripts/fuzz.sh:
+#                                     libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer,
+#                                     Debian's clang)
 #   bash scripts/quickstart.sh demo   same set-up, builds CGAL's Polyhedron demo with the plugins
 #                                     of both packages (build-demo/) and starts it on kitten.xyz
 #                                     and the 25 footprints (with a display; without one, says
@@ -25,7 +28,8 @@ packages=(cmake g++ make ccache libcgal-dev libcgal-demo libeigen3-dev libtbb-de
           libmpfr-dev libboost-dev libboost-timer-dev libcli11-dev nlohmann-json3-dev doxygen)
 # the tiles over MPI ranks (lex_reconstruct_mpi) and their test with 2 and 3 ranks
 # and the keys of Debian 13 (trixie), whose CGAL 6.0.1 the tests also use
-if [ "$mode" = test ]; then packages+=(libopenmpi-dev openmpi-bin debian-archive-keyring); fi
+# and the fuzzers (clang's libFuzzer and sanitizer runtimes)
+if [ "$mode" = test ]; then packages+=(libopenmpi-dev openmpi-bin debian-archive-keyring clang libclang-rt-14-dev); fi
 # the Polyhedron demo (Qt5, QtScript, CGAL's Qt5 headers) and its headless run (Xvfb, Mesa)
 if [ "$mode" != run ]; then
   packages+=(qtbase5-dev qtscript5-dev libqt5svg5-dev libqt5opengl5-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri)
@@ -83,4 +87,8 @@ else
   # without the MPI programs (the sources of lod2_reconstruct and lex_reconstruct, built once
   # more), the other examples and the demo
   KINDS=Tests JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF
+  # the readers under libFuzzer, from their seed corpora; not yet the kinetic partition, in which
+  # fuzz_kinetic_partition finds invalid partitions within a minute (the inputs are kept in
+  # test/Polygon_partition_simplification/data/fuzz/kinetic_partition_invalid/)
+  bash scripts/fuzz.sh 20 fuzz_point_file fuzz_polyline_file fuzz_segments_file fuzz_footprints
 fi
