@@ -12,9 +12,10 @@ endif()
 
 # urban_fuzz_harness(NAME CORPUS LABEL [NO_VPTR]): the harness NAME.cpp of the current folder,
 # its corpus folder CORPUS, the ctest label LABEL. NO_VPTR: UndefinedBehaviorSanitizer without
-# its vptr check, for harnesses that use CGAL's Arrangement_2, whose face and vertex handles
-# are downcast from the base class of the DCEL (a static_cast that the vptr check reports,
-# though the objects are of the derived type).
+# its vptr check, for harnesses that use CGAL's Arrangement_2: its handles static_cast the
+# records of its DCEL (Arr_face, ...) to the arrangement's Face, Halfedge and Vertex, classes
+# derived from them that add no data, which the vptr check reports as a downcast to a type the
+# object is not of.
 function(urban_fuzz_harness name corpus label)
   cmake_parse_arguments(FUZZ "NO_VPTR" "" "" ${ARGN})
   if(URBAN_FUZZING)
@@ -25,8 +26,6 @@ function(urban_fuzz_harness name corpus label)
     add_executable(${name} EXCLUDE_FROM_ALL ${name}.cpp)
     target_compile_options(${name} PRIVATE ${sanitizers} -O1 -g -UNDEBUG) # -O1: builds fast, runs fast enough
     target_link_options(${name} PRIVATE ${sanitizers})
-    set_property(GLOBAL APPEND PROPERTY URBAN_FUZZ_HARNESSES ${name})
-    set_property(GLOBAL APPEND PROPERTY URBAN_FUZZ_CORPORA ${corpus})
   else()
     add_executable(${name} ${name}.cpp ${URBAN_PACKAGES_ROOT}/test/fuzz_support/fuzz_replay_main.cpp)
     target_compile_options(${name} PRIVATE -UNDEBUG) # checks stay active in Release builds
