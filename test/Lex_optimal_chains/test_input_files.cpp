@@ -135,6 +135,11 @@ void test_point_files()
   binary_faces += std::string("\xff\xff\xff\xff", 4) + std::string(12, '\0');
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("long_binary_list.ply", binary_faces)); },
                     "a list of 4294967295 values is longer than the rest of the file");
+  // data that ends within a point (a file cut short), before its list: CGAL's reader fails
+  std::string cut_short = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty double x\nproperty double y\n"
+                          "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  cut_short += std::string(26, '\0');
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("cut_short.ply", cut_short)); }, "cannot read points");
 
   // not read at all
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("points.txt", "0 0 0\n")); }, "must end in .xyz, .ply, .off or .las");

@@ -97,8 +97,10 @@ inline void check_PLY_lists(std::istream& in, const std::vector<PLY_element_layo
           }
         }
         const unsigned long long bytes = values * (unsigned long long)(format == 0 ? 1 : p.value_bytes);
-        if(values > remaining || bytes > remaining)
+        if(values > remaining || bytes > remaining) {
+          if(!p.is_list) return; // the data ends within a scalar: CGAL's reader fails there
           fail("a list of " + std::to_string(values) + " values is longer than the rest of the file");
+        }
         if(format == 0) {
           std::string token;
           for(unsigned long long v = 0; v < values && (in >> token); ++v) {}
