@@ -5,7 +5,7 @@
 //                    [--threads N] [--lambda1 V] [--lambda2 V] [--epsilon V] [--json]
 //   mpirun -np K lod2_reconstruct_mpi INPUT OUTPUT ...   (a city tile, its buildings dealt out to K ranks)
 //
-// INPUT: points as .ply, .xyz, .off or uncompressed .las (normals used when present; z is
+// INPUT: points as .ply, .xyz, .pwn, .off or uncompressed .las (normals used when present; z is
 // vertical). A classified input (a LAS file, or a PLY file with an int or uchar `classification`
 // or `label` property) or one given --footprints (GeoJSON polygons) is a city tile: its buildings
 // are modelled one at a time, in parallel (lod2_city_reconstruction()), each as an LoD 2.2 solid
@@ -65,8 +65,8 @@ static bool ends_with(const std::string& s, const std::string& end)
 
 static Point_set read_points(const std::string& input)
 {
-  if(!(ends_with(input, ".ply") || ends_with(input, ".xyz") || ends_with(input, ".off")))
-    throw std::runtime_error("INPUT must be a .ply, .xyz, .off or .las point cloud: " + input);
+  if(!(ends_with(input, ".ply") || ends_with(input, ".xyz") || ends_with(input, ".pwn") || ends_with(input, ".off")))
+    throw std::runtime_error("INPUT must be a .ply, .xyz, .pwn, .off or .las point cloud: " + input);
   std::ifstream probe(input);
   if(!probe) throw std::runtime_error("cannot read " + input);
   // a PLY file that CGAL's reader cannot read safely (a property before any element, counts
@@ -517,7 +517,7 @@ int main(int argc, char** argv)
   Process_group group(argc, argv); // MPI_Init under lod2_reconstruct_mpi
   CLI::App app{"LOD2 building models from a point cloud (planes, segments, kinetic partition, simplification, lift)"};
   Options o;
-  app.add_option("INPUT", o.input, "points: .ply, .xyz, .off or .las")->required();
+  app.add_option("INPUT", o.input, "points: .ply, .xyz, .pwn, .off or .las")->required();
   app.add_option("OUTPUT", o.output, "model: .off, .ply, .obj, .city.json (CityJSON 1.1) or .city.jsonl (CityJSON Text Sequences, tiles)")->required();
   app.add_option("--planes", o.planes, "detect (region growing, default) or the name of an int point property giving the plane of each point (scenes only)");
   app.add_option("--classes", o.classes, "ground and building classes of a classified input, as GROUND[,...]:BUILDING[,...] (default 2:6)");

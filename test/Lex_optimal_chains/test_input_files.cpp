@@ -142,7 +142,7 @@ void test_point_files()
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("cut_short.ply", cut_short)); }, "cannot read points");
 
   // not read at all
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("points.txt", "0 0 0\n")); }, "must end in .xyz, .ply, .off or .las");
+  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("points.txt", "0 0 0\n")); }, "must end in .xyz, .pwn, .ply, .off or .las");
   expect_unreadable([&] { LOC::IO::read_point_file<Point>((directory / "missing.xyz").string()); }, "cannot open input");
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(directory.string() + "/.xyz"); }, "must end in"); // a hidden file named xyz
   expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("garbage.off", "not an off file\n1 2\n")); },
@@ -175,7 +175,7 @@ void test_polyline_files()
 // A real scan: the same points as CGAL's reader.
 void test_real_data(const std::string& data)
 {
-  for(const char* name : {"points_3/kitten.xyz", "points_3/b9_training.ply"}) {
+  for(const char* name : {"points_3/kitten.xyz", "points_3/b9_training.ply", "points_3/cube.pwn"}) {
     const std::string path = data + "/" + name;
     if(!fs::exists(path)) {
       std::cout << "  " << path << " not found: skipped\n";

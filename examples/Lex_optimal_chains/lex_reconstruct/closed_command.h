@@ -23,7 +23,7 @@ public:
   explicit Closed_command(CLI::App& app)
   {
     command_ = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
-    command_->add_option("INPUT", input_, "points: .xyz, .ply, .off or .las")->required();
+    command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT", output_, "mesh: .off, .ply or .obj")->required();
     command_->add_option("--interior", closed_.interior_text, "a point inside the surface, X,Y,Z (repeatable)");
     command_->add_option("--exterior", closed_.exterior_text, "a point outside the surface, X,Y,Z (repeatable)");

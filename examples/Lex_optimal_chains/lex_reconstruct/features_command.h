@@ -24,7 +24,7 @@ public:
   explicit Features_command(CLI::App& app)
   {
     command_ = app.add_subcommand("features", "a surface decomposed into the elements of the critical basis around sharp features");
-    command_->add_option("INPUT", input_, "points: .xyz, .ply, .off or .las")->required();
+    command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT", output_, "mesh: .off, .ply (with the element of each face) or .obj")->required();
     command_->add_option("--threshold", features_.threshold, "threshold of the VCM feature estimate (default 0.16)")
       ->check(positive_number());

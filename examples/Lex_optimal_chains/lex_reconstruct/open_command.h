@@ -15,7 +15,7 @@ public:
   explicit Open_command(CLI::App& app)
   {
     command_ = app.add_subcommand("open", "open surface bounded by closed polylines");
-    command_->add_option("INPUT", input_, "points: .xyz, .ply, .off or .las")->required();
+    command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT", output_, "mesh: .off, .ply or .obj")->required();
     auto* b = command_->add_option("--boundary", boundary_file_, "closed polylines, CGAL's polylines text format");
     auto* a = command_->add_flag("--auto-boundary", auto_boundary_,

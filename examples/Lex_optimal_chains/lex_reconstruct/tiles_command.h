@@ -200,7 +200,7 @@ public:
   explicit Tiles_command(CLI::App& app)
   {
     command_ = app.add_subcommand("tiles", "a terrain-like cloud in tiles whose meshes meet exactly at their seams");
-    command_->add_option("INPUT", input_, "points: .xyz, .ply, .off or .las")->required();
+    command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT_DIR", directory_, "directory of the tile meshes tile_C_R.ply (created if missing)")->required();
     command_->add_option("--tile-size", tiles_.tile_size, "largest side of a tile, in the units of the points")->required();
     command_->add_option("--seam-spacing", tiles_.seam_spacing,

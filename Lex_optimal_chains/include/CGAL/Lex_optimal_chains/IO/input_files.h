@@ -80,8 +80,8 @@ void for_each_point_in_file(const std::string& path, const std::vector<int>& cla
     throw Input_error(Input_error_code::UNREADABLE_FILE, "'" + path + "': compressed LAS (LAZ) is not supported: "
                                                          "decompress it first (laszip, or pdal translate in.laz out.las)");
   if(extension == ".las") return for_each_las_point<Point_3>(path, classes, f);
-  if(extension != ".xyz" && extension != ".ply" && extension != ".off")
-    throw Input_error(Input_error_code::UNREADABLE_FILE, "input '" + path + "' must end in .xyz, .ply, .off or .las");
+  if(extension != ".xyz" && extension != ".pwn" && extension != ".ply" && extension != ".off")
+    throw Input_error(Input_error_code::UNREADABLE_FILE, "input '" + path + "' must end in .xyz, .pwn, .ply, .off or .las");
   if(!classes.empty())
     throw Input_error(Input_error_code::UNREADABLE_FILE, "classes are read from LAS files only, not from '" + path + "'");
   if(!std::filesystem::is_regular_file(path))
@@ -104,8 +104,8 @@ void for_each_point_in_file(const std::string& path, const std::vector<int>& cla
 /*!
 \ingroup PkgLexOptimalChainsRef
 
-Reads the points of an XYZ, PLY or OFF file (by its extension, in any case) with CGAL's
-readers, or of an uncompressed LAS file with `read_las_points()` (keeping the points whose
+Reads the points of an XYZ, PLY or OFF file (by its extension, in any case; `.pwn`, CGAL's
+points with normals, is XYZ) with CGAL's readers, or of an uncompressed LAS file with `read_las_points()` (keeping the points whose
 classification is in `classes`, if not empty), and refuses what they would read in part: CGAL's readers stop after the number of
 points that an OFF or PLY header declares, so a header that declares fewer than the file holds
 would drop points silently. For ASCII files whose points come last (an OFF file without faces,
