@@ -273,8 +273,9 @@ inline std::string oracle_defect(const std::vector<std::array<double, 2>>& point
 }
 
 // The parts of the input segments not covered by the edges (each from points[e[0]] to
-// points[e[1]]): the edges within `tolerance` of the line of a segment, projected on it, cover
-// it up to gaps of at most `tolerance`; the larger gaps are returned (input index, piece).
+// points[e[1]]): the parts of edges beside a segment that are within `tolerance` of its line,
+// projected on it, cover it up to gaps of at most `tolerance`; the larger gaps are returned
+// (input index, piece).
 inline std::vector<std::pair<std::size_t, Segment>>
 uncovered_parts(const std::vector<Segment>& input, const std::vector<std::array<double, 2>>& points,
                 const std::vector<std::array<std::size_t, 2>>& edges, double tolerance)
@@ -312,9 +313,18 @@ uncovered_parts(const std::vector<Segment>& input, const std::vector<std::array<
       const auto& b = points[edges[e][1]];
       auto off = [&](const std::array<double, 2>& p) { return std::abs(dx * (p[1] - x[1]) - dy * (p[0] - x[0])) / length; };
       auto along = [&](const std::array<double, 2>& p) { return (dx * (p[0] - x[0]) + dy * (p[1] - x[1])) / length; };
-      if(off(a) > tolerance || off(b) > tolerance) continue;
+      // the part of the edge beside the segment (an edge can go on far beyond the end of a
+      // segment moved onto its line, where the lines part by more than the tolerance)
       const double ta = along(a), tb = along(b);
-      intervals.push_back({std::min(ta, tb), std::max(ta, tb)});
+      if(!(ta != tb)) continue;
+      const double from = std::max(std::min(ta, tb), -tolerance), to = std::min(std::max(ta, tb), length + tolerance);
+      if(!(from < to)) continue;
+      auto at = [&](double t) { // the point of the edge at parameter t along the segment
+        const double u = (t - ta) / (tb - ta);
+        return std::array<double, 2>{a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])};
+      };
+      if(off(at(from)) > tolerance || off(at(to)) > tolerance) continue;
+      intervals.push_back({from, to});
     }
     intervals.push_back({length, HUGE_VAL}); // the end of the segment closes the last gap
     std::sort(intervals.begin(), intervals.end());
@@ -400,6 +410,7 @@ struct Scene_result
   std::size_t uncovered = 0;  // input segments with parts that split a cell but are not covered by edges
   std::size_t segments = 0, edges = 0;
   std::size_t extended_corner_ends = 0; // ends stopped at a corner that went on to split a pinched cell
+  std::size_t removed_edges = 0; // edges the rounding removed to keep the partition valid
   double seconds = 0;         // of kinetic_partition_2()
 };
 
@@ -425,6 +436,7 @@ Scene_result run_scene(const std::vector<Segment>& scene, const NamedParameters&
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.extended_corner_ends = report.extended_corner_ends;
+  r.removed_edges = report.removed_edges;
   std::vector<std::array<double, 2>> points, normalized;
   for(std::size_t v = 0; v < p.number_of_vertices(); ++v) {
     const K::Point_2 q = p.point(v);

@@ -3,7 +3,8 @@
 // (with the coordinates the user gets, and with those of the normalized frame), those that the
 // package's own check calls valid or invalid against the oracle, the scenes with an input
 // segment left uncovered, the scenes where an end stopped at a corner went on to split a cell
-// around a chain of corners hanging at a point, and the time of the kinetic partition, against that of CGAL's
+// around a chain of corners hanging at a point, the scenes where the last step of the rounding
+// removed edges to keep the partition valid, and the time of the kinetic partition, against that of CGAL's
 // exact arrangement of the input segments (the baseline, measured in the same run).
 //   benchmark_kinetic_partition_stress [scenes_per_generator=1000] [first_seed=0] [largest_scene=10000] [generator...]
 #include "kinetic_stress_scenes.h"
@@ -43,12 +44,13 @@ int main(int argc, char** argv)
       if(std::strcmp(argv[a], kinetic_stress::name(g)) == 0) generators.push_back(g);
   if(generators.empty()) generators.assign(std::begin(kinetic_stress::all_generators), std::end(kinetic_stress::all_generators));
 
-  std::printf("%-11s %7s %8s %8s %10s %12s %12s %10s %9s %10s %10s %9s\n", "generator", "scenes", "refused", "invalid",
-              "invalid_nf", "false_valid", "false_invld", "uncovered", "extended", "kinetic_s", "arrange_s", "ratio");
+  std::printf("%-11s %7s %8s %8s %10s %12s %12s %10s %9s %8s %10s %10s %9s\n", "generator", "scenes", "refused",
+              "invalid", "invalid_nf", "false_valid", "false_invld", "uncovered", "extended", "removed", "kinetic_s",
+              "arrange_s", "ratio");
   std::size_t total_invalid = 0;
   for(const auto g : generators) {
     std::size_t refused = 0, invalid = 0, invalid_normalized = 0, false_valid = 0, false_invalid = 0, uncovered = 0,
-                extended = 0;
+                extended = 0, removed = 0;
     double kinetic = 0, baseline = 0;
     std::vector<std::string> examples;
     for(unsigned long long seed = first; seed < first + scenes; ++seed) {
@@ -66,11 +68,12 @@ int main(int argc, char** argv)
       if(!r.package_says_valid && r.normalized_defect.empty()) ++false_invalid;
       if(r.uncovered > 0) { ++uncovered; note(std::to_string(r.uncovered) + " segments uncovered"); }
       if(r.extended_corner_ends > 0) ++extended;
+      if(r.removed_edges > 0) { ++removed; note(std::to_string(r.removed_edges) + " edges removed by the rounding"); }
     }
     total_invalid += invalid + invalid_normalized;
-    std::printf("%-11s %7llu %8zu %8zu %10zu %12zu %12zu %10zu %9zu %10.3f %10.3f %9.2f\n", kinetic_stress::name(g), scenes,
-                refused, invalid, invalid_normalized, false_valid, false_invalid, uncovered, extended, kinetic, baseline,
-                baseline > 0 ? kinetic / baseline : 0.);
+    std::printf("%-11s %7llu %8zu %8zu %10zu %12zu %12zu %10zu %9zu %8zu %10.3f %10.3f %9.2f\n", kinetic_stress::name(g),
+                scenes, refused, invalid, invalid_normalized, false_valid, false_invalid, uncovered, extended, removed,
+                kinetic, baseline, baseline > 0 ? kinetic / baseline : 0.);
     for(const auto& e : examples) std::printf("    %s\n", e.c_str());
     std::fflush(stdout);
   }

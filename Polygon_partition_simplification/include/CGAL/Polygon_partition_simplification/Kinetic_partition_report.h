@@ -24,6 +24,7 @@ struct Kinetic_partition_report
   std::size_t moved_segments = 0;       ///< segments moved onto the line of a longer one (`collinearity_distance`)
   std::size_t grown_segments = 0;       ///< segments grown by the propagation (after the merges)
   std::size_t extended_corner_ends = 0; ///< ends stopped at a corner that went on to split a cell around a chain of corners hanging at a point
+  std::size_t removed_edges = 0;        ///< edges removed by the rounding to the double coordinates, to keep the partition valid (parts of features below the rounding tolerance, see the manual's section on the rounding)
   std::size_t events = 0;               ///< intersections examined by the last propagation
 };
 

@@ -77,6 +77,41 @@ corners_off_lines(const Enclosing_rectangle_2& rectangle, double margin, const s
   return {corners, margin_across};
 }
 
+// Whether `r` holds every point of `hull` (up to 1e-9 of its half-diagonal). CGAL's
+// min_rectangle_2() constructs the corners in double: with tiny coordinates (products that
+// underflow) they can leave points out.
+template <class Point>
+bool holds(const Enclosing_rectangle_2& r, const std::vector<Point>& hull)
+{
+  const double slack = 1e-9 * r.half_diagonal();
+  for(const Point& q : hull) {
+    const double x = q.x() - r.center[0], y = q.y() - r.center[1];
+    const double s = x * r.axis[0] + y * r.axis[1], t = -x * r.axis[1] + y * r.axis[0];
+    if(!(std::abs(s) <= r.half_extent[0] + slack && std::abs(t) <= r.half_extent[1] + slack)) return false;
+  }
+  return true;
+}
+
+// The rectangle of `hull` along `axis` (a unit vector): the extents of the projections of the
+// points, measured from the first point (differences of nearby coordinates are exact).
+template <class Point>
+Enclosing_rectangle_2 rectangle_along(const std::array<double, 2>& axis, const std::vector<Point>& hull)
+{
+  const double x0 = hull[0].x(), y0 = hull[0].y();
+  double low[2] = {0, 0}, high[2] = {0, 0};
+  for(const Point& q : hull) {
+    const double x = q.x() - x0, y = q.y() - y0;
+    const double st[2] = {x * axis[0] + y * axis[1], -x * axis[1] + y * axis[0]};
+    for(int k = 0; k < 2; ++k) { low[k] = std::min(low[k], st[k]); high[k] = std::max(high[k], st[k]); }
+  }
+  Enclosing_rectangle_2 r;
+  r.axis = axis;
+  const double s = (low[0] + high[0]) / 2, t = (low[1] + high[1]) / 2;
+  r.center = {x0 + s * axis[0] - t * axis[1], y0 + s * axis[1] + t * axis[0]};
+  r.half_extent = {(high[0] - low[0]) / 2, (high[1] - low[1]) / 2};
+  return r;
+}
+
 template <class PK>
 Enclosing_rectangle_2 enclosing_rectangle(const std::vector<std::array<double, 2>>& points)
 {
@@ -98,7 +133,7 @@ Enclosing_rectangle_2 enclosing_rectangle(const std::vector<std::array<double, 2
       r.axis = {dx / n, dy / n};
       r.center = {(c[0].x() + c[2].x()) / 2, (c[0].y() + c[2].y()) / 2};
       r.half_extent = {n / 2, m / 2};
-      return r;
+      return holds(r, hull) ? r : rectangle_along(r.axis, hull);
     }
   }
   // collinear points (or nearly): the rectangle of their extreme points, flat

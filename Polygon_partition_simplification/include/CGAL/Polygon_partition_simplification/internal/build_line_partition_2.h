@@ -17,6 +17,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/Piece_arrangement_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/merge_rounded_points_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/nearest_double.h>
+#include <CGAL/Polygon_partition_simplification/internal/remove_defective_edges_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/split_pinched_cells_2.h>
 
 #include <CGAL/Arrangement_2.h>
@@ -268,6 +269,10 @@ double merge_tolerance(const Frame& frame)
 // `gt`: the geometric traits of the result, whose exact constructions kernel is `EK`.
 // `corner_rays`: the ends of pieces that may go on to split a cell that is not a simple polygon
 // (see split_pinched_cells_2.h); `extended`, if given, is set to the number of them that did.
+// With `removed` (a kinetic partition, whose pieces are the grown segments), the defects that
+// the rounding leaves are removed (see remove_defective_edges_2.h) and `removed` is set to the
+// number of edges removed for them; without it (pieces given by the user: polygons, an
+// arrangement), nothing the user gave is removed and the partition is returned as it is.
 template <class GeomTraits, class EK>
 Line_partition_2<GeomTraits>
 build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
@@ -275,7 +280,8 @@ build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
                      const typename Line_partition_2<GeomTraits>::Frame& frame,
                      const typename Line_partition_2<GeomTraits>::Geom_traits& gt,
                      const std::vector<std::array<double, 4>>& group_lines = {},
-                     const std::vector<Corner_ray<EK>>& corner_rays = {}, std::size_t* extended = nullptr)
+                     const std::vector<Corner_ray<EK>>& corner_rays = {}, std::size_t* extended = nullptr,
+                     std::size_t* removed = nullptr)
 {
   using Partition = Line_partition_2<GeomTraits>;
   static_assert(std::is_same<EK, typename Partition::Geom_traits::Exact_constructions_kernel>::value,
@@ -312,6 +318,10 @@ build_line_partition(const std::vector<Exact_piece<EK>>& pieces,
   //    merge_rounded_points_2.h), with the lines in their final order.
   number_lines_canonically(lines.lines, parts.vertices, parts.edges);
   round_points_apart<typename Partition::Geom_traits::Exact_predicates_kernel>(lines.lines, parts.vertices, parts.edges, merge_tolerance(frame));
+  //    In a kinetic partition, what the rounds could not settle is removed (an edge at a time,
+  //    the shortest first).
+  if(removed != nullptr)
+    *removed = remove_defective_edges<typename Partition::Geom_traits>(lines.lines, parts.vertices, parts.edges);
   // 6. Numbering independent of the input order and position.
   return canonical_partition<Partition>(frame, lines.lines, std::move(parts.vertices), std::move(parts.edges), gt);
 }

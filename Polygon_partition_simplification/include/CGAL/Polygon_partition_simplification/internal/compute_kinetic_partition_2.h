@@ -204,7 +204,7 @@ compute_kinetic_partition(const SegmentRange& segments, const NamedParameters& n
   for(std::size_t r = 0; r < propagation.number_of_rays(); ++r)
     if(propagation.stopped_at_origin(r)) corner_rays.push_back({propagation.origin(r), propagation.direction(r), r / 2});
   Partition result = PPS::internal::build_line_partition<typename Result::Given>(
-    pieces, metric_segments, frame, gt, input, corner_rays, &report.extended_corner_ends);
+    pieces, metric_segments, frame, gt, input, corner_rays, &report.extended_corner_ends, &report.removed_edges);
   if(auto* out = parameters::choose_parameter(parameters::get_parameter(np, PPS::internal_np::report), static_cast<PPS::Kinetic_partition_report*>(nullptr)))
     *out = report;
   return result;
