@@ -87,8 +87,7 @@ else
   # without the MPI programs (the sources of lod2_reconstruct and lex_reconstruct, built once
   # more), the other examples and the demo
   KINDS=Tests JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF
-  # the readers under libFuzzer, from their seed corpora; not yet the kinetic partition, in which
-  # fuzz_kinetic_partition finds invalid partitions within a minute (the inputs are kept in
-  # test/Polygon_partition_simplification/data/fuzz/kinetic_partition_invalid/)
+  # the readers under libFuzzer, from their seed corpora (fuzz_kinetic_partition, at about 16
+  # scenes a second, is run on its own; ctest replays its corpus)
   bash scripts/fuzz.sh 20 fuzz_point_file fuzz_polyline_file fuzz_segments_file fuzz_footprints
 fi
