@@ -37,6 +37,7 @@
 #include "City_building_bytes.h"
 #include "GeoJSON_footprints.h"
 #include "Process_group.h"
+#include "Temporary_output_files.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -88,6 +89,7 @@ static Point_set read_points(const std::string& input)
 static void write_model(const Mesh& model, const std::string& output)
 {
   const std::string temporary = output + ".partial" + output.substr(output.rfind('.'));
+  const urban_programs::Temporary_output_file interrupted(temporary);
   bool written = false;
   if(ends_with(output, ".city.json")) {
     std::ofstream out(temporary);
@@ -239,6 +241,7 @@ static Mesh best_models(const std::vector<City_building>& buildings)
 static void write_city(const std::vector<City_building>& buildings, const std::string& output)
 {
   const std::string temporary = output + ".partial";
+  const urban_programs::Temporary_output_file interrupted(temporary);
   bool written = false;
   if(ends_with(output, ".city.json") || ends_with(output, ".city.jsonl")) {
     std::ofstream out(temporary, std::ios::binary);
@@ -250,6 +253,7 @@ static void write_city(const std::vector<City_building>& buildings, const std::s
     written = CGAL::IO::write_PLY(out, best_models(buildings)) && out.good();
   } else {
     const std::string named = temporary + output.substr(output.rfind('.'));
+    const urban_programs::Temporary_output_file interrupted_named(named);
     Mesh all = best_models(buildings);
     written = CGAL::IO::write_polygon_mesh(named, all, CGAL::parameters::stream_precision(17)) &&
               std::rename(named.c_str(), temporary.c_str()) == 0;

@@ -17,11 +17,14 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "Temporary_output_files.h"
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -92,7 +95,11 @@ int main(int argc, char** argv)
   try {
     if(format != "geojson" && format != "json" && format != "wkt")
       throw std::runtime_error("output '" + output + "' must end in .geojson, .json or .wkt");
-    // both files are created (empty, under their temporary names) before the work
+    // both files are created (empty, under their temporary names) before the work, and removed
+    // if a signal interrupts it
+    const urban_programs::Temporary_output_file interrupted(temporary);
+    std::optional<urban_programs::Temporary_output_file> interrupted_svg;
+    if(!svg.empty()) interrupted_svg.emplace(svg_temporary);
     if(!std::ofstream(temporary)) throw std::runtime_error("cannot write " + output);
     if(!svg.empty() && !std::ofstream(svg_temporary)) throw std::runtime_error("cannot write " + svg);
     const std::vector<K::Segment_2> segments = PPS::IO::read_segments_2<K>(input);

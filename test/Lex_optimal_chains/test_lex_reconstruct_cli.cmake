@@ -396,3 +396,30 @@ if(TRIANGULATION_PROGRAM)
     message(FATAL_ERROR "square: got '${out}'")
   endif()
 endif()
+
+# Interrupted by a signal (Ctrl-C's SIGINT, the SIGTERM of a scheduler or of `timeout`) while it
+# works on a million points: no output and no temporary file left (the temporary file exists
+# from the start of the run: a SIGKILL, which no program can catch, leaves it).
+find_program(TIMEOUT_PROGRAM timeout)
+find_program(AWK_PROGRAM NAMES awk mawk gawk)
+if(NOT TIMEOUT_PROGRAM OR NOT AWK_PROGRAM)
+  message(FATAL_ERROR "the interrupted runs need timeout (coreutils) and awk")
+endif()
+execute_process(COMMAND "${AWK_PROGRAM}" "BEGIN { srand(1); for(i = 0; i < 1000000; ++i) { z = 2 * rand() - 1; t = 6.2831853 * rand(); r = sqrt(1 - z * z); printf \"%.6f %.6f %.6f\\n\", r * cos(t), r * sin(t), z } }"
+                OUTPUT_FILE "${WORK}/sphere_million.xyz" RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the million points could not be written")
+endif()
+foreach(signal INT TERM)
+  execute_process(COMMAND "${TIMEOUT_PROGRAM}" -s ${signal} 1 "${PROGRAM}" closed "${WORK}/sphere_million.xyz"
+                          "${WORK}/interrupted.off" RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
+  if(NOT rc EQUAL 124) # what timeout returns when the time ran out and its signal ended the run
+    message(FATAL_ERROR "interrupted by SIG${signal}: the run was not interrupted (exit code ${rc})")
+  endif()
+  file(GLOB left "${WORK}/interrupted*" "${WORK}/.interrupted*")
+  if(left)
+    message(FATAL_ERROR "interrupted by SIG${signal}: left ${left}")
+  endif()
+  message(STATUS "interrupted by SIG${signal}: nothing left")
+endforeach()
+file(REMOVE "${WORK}/sphere_million.xyz")

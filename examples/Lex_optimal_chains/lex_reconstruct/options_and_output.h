@@ -12,6 +12,8 @@
 #include <CGAL/Lex_optimal_chains/IO/input_files.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include "../Temporary_output_files.h"
+
 #include <CLI/CLI.hpp>
 #include <boost/timer/progress_display.hpp>
 #include <nlohmann/json.hpp>
@@ -177,14 +179,14 @@ inline bool write_binary_ply(const std::string& path, const Mesh& mesh, const st
   return bool(out.flush());
 }
 
-// The mesh is written under a temporary name with the same extension, renamed on success.
+// The mesh is written under a temporary name with the same extension, renamed on success; a
+// run interrupted by a signal leaves no temporary file either (Temporary_output_files.h).
 class Output_file
 {
 public:
-  explicit Output_file(const std::string& output) : output_(output)
+  explicit Output_file(const std::string& output)
+    : output_(output), tmp_(temporary_name(output)), interrupted_(tmp_)
   {
-    const std::filesystem::path out_path(output);
-    tmp_ = (out_path.parent_path() / ("." + out_path.stem().string() + ".partial" + out_path.extension().string())).string();
     const std::string out_ext = lower_extension(output);
     if(out_ext != ".off" && out_ext != ".ply" && out_ext != ".obj")
       throw std::invalid_argument("output '" + output + "' must end in .off, .ply or .obj");
@@ -205,7 +207,13 @@ public:
     std::filesystem::rename(tmp_, output_);
   }
 private:
+  static std::string temporary_name(const std::string& output)
+  {
+    const std::filesystem::path out_path(output);
+    return (out_path.parent_path() / ("." + out_path.stem().string() + ".partial" + out_path.extension().string())).string();
+  }
   std::string output_, tmp_;
+  urban_programs::Temporary_output_file interrupted_; // after tmp_: registered before the file exists
 };
 
 // the options common to the subcommands closed, open and tiles
