@@ -423,3 +423,19 @@ foreach(signal INT TERM)
   message(STATUS "interrupted by SIG${signal}: nothing left")
 endforeach()
 file(REMOVE "${WORK}/sphere_million.xyz")
+
+# A cloud that needs more memory than the run may use is refused before the triangulation
+# (kitten.xyz: 5,210 points, about 4 MB in closed): with --max-memory below its
+# need, by every subcommand that triangulates it whole; with more, it runs.
+expect_failure_because(memory_closed "points need about [0-9]+ MB, more than the 1 MB of --max-memory"
+                       closed "${DATA}/points_3/kitten.xyz" --max-memory 1)
+expect_failure_because(memory_open "points need about [0-9]+ MB, more than the 1 MB of --max-memory"
+                       open "${DATA}/points_3/kitten.xyz" --auto-boundary --max-memory 1)
+expect_failure_because(memory_features "points need about [0-9]+ MB, more than the 1 MB of --max-memory"
+                       features "${DATA}/points_3/kitten.xyz" --max-memory 1)
+expect_failure(memory_zero closed "${DATA}/points_3/kitten.xyz" --max-memory 0)
+execute_process(COMMAND "${PROGRAM}" closed "${DATA}/points_3/kitten.xyz" "${WORK}/memory_enough.off" --max-memory 64
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/memory_enough.off")
+  message(FATAL_ERROR "memory_enough: exit code ${rc}: ${err}")
+endif()

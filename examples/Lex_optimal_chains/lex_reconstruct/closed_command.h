@@ -2,6 +2,7 @@
 #ifndef URBAN_LEX_RECONSTRUCT_CLOSED_COMMAND_H
 #define URBAN_LEX_RECONSTRUCT_CLOSED_COMMAND_H
 
+#include "Memory_check.h"
 #include "options_and_output.h"
 
 #include <CGAL/lex_optimal_closed_surface.h>
@@ -25,6 +26,7 @@ public:
     command_ = app.add_subcommand("closed", "closed surface through a lexicographic min-cut");
     command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT", output_, "mesh: .off, .ply or .obj")->required();
+    add_memory_option(command_, max_memory_mb_);
     command_->add_option("--interior", closed_.interior_text, "a point inside the surface, X,Y,Z (repeatable)");
     command_->add_option("--exterior", closed_.exterior_text, "a point outside the surface, X,Y,Z (repeatable)");
     command_->add_option("--min-persistence", closed_.min_persistence,
@@ -52,6 +54,7 @@ public:
     for(const std::string& t : closed_.interior_text) interior.push_back(parse_point(t));
     for(const std::string& t : closed_.exterior_text) exterior.push_back(parse_point(t));
     const std::vector<Point> points = LOC::IO::read_point_file<Point>(input_);
+    check_memory(points.size(), closed_bytes_per_point, max_memory_mb_);
     Progress_bar bar;
     Mesh mesh;
     const auto np = LOC::parameters::interior_points(interior,
@@ -105,6 +108,7 @@ private:
   std::string input_, output_;
   Closed_options closed_;
   Output_options options_;
+  double max_memory_mb_ = 0; // 0: the memory available
 };
 
 } // namespace lex_reconstruct

@@ -4,6 +4,7 @@
 #ifndef URBAN_LEX_RECONSTRUCT_FEATURES_COMMAND_H
 #define URBAN_LEX_RECONSTRUCT_FEATURES_COMMAND_H
 
+#include "Memory_check.h"
 #include "options_and_output.h"
 
 #include <CGAL/lex_optimal_feature_reconstruction.h>
@@ -26,6 +27,7 @@ public:
     command_ = app.add_subcommand("features", "a surface decomposed into the elements of the critical basis around sharp features");
     command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT", output_, "mesh: .off, .ply (with the element of each face) or .obj")->required();
+    add_memory_option(command_, max_memory_mb_);
     command_->add_option("--threshold", features_.threshold, "threshold of the VCM feature estimate (default 0.16)")
       ->check(positive_number());
     command_->add_option("--offset", features_.offset,
@@ -46,6 +48,7 @@ public:
   {
     Output_file file(output_);
     const std::vector<Point> points = LOC::IO::read_point_file<Point>(input_);
+    check_memory(points.size(), features_bytes_per_point, max_memory_mb_);
     Mesh mesh;
     auto element = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:element", std::size_t(0)).first;
     const auto np = LOC::parameters::feature_threshold(features_.threshold,
@@ -112,6 +115,7 @@ private:
   std::string input_, output_;
   Features_options features_;
   Output_options options_;
+  double max_memory_mb_ = 0; // 0: the memory available
 };
 
 } // namespace lex_reconstruct

@@ -2,6 +2,7 @@
 #ifndef URBAN_LEX_RECONSTRUCT_OPEN_COMMAND_H
 #define URBAN_LEX_RECONSTRUCT_OPEN_COMMAND_H
 
+#include "Memory_check.h"
 #include "options_and_output.h"
 
 #include <CGAL/lex_optimal_open_surface.h>
@@ -17,6 +18,7 @@ public:
     command_ = app.add_subcommand("open", "open surface bounded by closed polylines");
     command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT", output_, "mesh: .off, .ply or .obj")->required();
+    add_memory_option(command_, max_memory_mb_);
     auto* b = command_->add_option("--boundary", boundary_file_, "closed polylines, CGAL's polylines text format");
     auto* a = command_->add_flag("--auto-boundary", auto_boundary_,
                                  "a polygon just outside the xy-footprint, draped at the height of the nearest points (terrain tiles); implies --drop-boundary-triangles");
@@ -47,6 +49,7 @@ public:
     if(coefficients_ != "z2" && coefficients_ != "q")
       throw std::invalid_argument("--coefficients must be z2 or q, not '" + coefficients_ + "'");
     const std::vector<Point> points = LOC::IO::read_point_file<Point>(input_);
+    check_memory(points.size(), open_bytes_per_point, max_memory_mb_);
     std::vector<std::vector<Point>> boundary;
     if(auto_boundary_) boundary.push_back(LOC::footprint_boundary(points));
     else boundary = LOC::IO::read_polyline_file<Point>(boundary_file_);
@@ -102,6 +105,7 @@ private:
   std::string input_, output_, boundary_file_, coefficients_ = "q";
   bool auto_boundary_ = false, remove_blocking_ = false, drop_ = false, keep_ = false;
   Output_options options_;
+  double max_memory_mb_ = 0; // 0: the memory available
 };
 
 } // namespace lex_reconstruct
