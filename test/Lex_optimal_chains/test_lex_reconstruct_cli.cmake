@@ -397,30 +397,56 @@ if(TRIANGULATION_PROGRAM)
   endif()
 endif()
 
-# Interrupted by a signal (Ctrl-C's SIGINT, the SIGTERM of a scheduler or of `timeout`) while it
-# works on a million points: no output and no temporary file left (the temporary file exists
-# from the start of the run: a SIGKILL, which no program can catch, leaves it).
-find_program(TIMEOUT_PROGRAM timeout)
+# Interrupted by a signal (the SIGTERM of a scheduler, the SIGHUP of a closed terminal; Ctrl-C's
+# SIGINT takes the same path) while it works on a million points: the signal ends the run (exit
+# status 128 + signal) and no output nor temporary file is left. The signal is sent once the
+# temporary file exists (a SIGKILL, which no program can catch, would leave it). A signal
+# ignored when the program starts stays ignored (nohup; sh starts a background job with SIGINT
+# ignored): the run is complete.
+find_program(SH_PROGRAM sh)
 find_program(AWK_PROGRAM NAMES awk mawk gawk)
-if(NOT TIMEOUT_PROGRAM OR NOT AWK_PROGRAM)
-  message(FATAL_ERROR "the interrupted runs need timeout (coreutils) and awk")
+if(NOT SH_PROGRAM OR NOT AWK_PROGRAM)
+  message(FATAL_ERROR "the interrupted runs need sh and awk")
 endif()
 execute_process(COMMAND "${AWK_PROGRAM}" "BEGIN { srand(1); for(i = 0; i < 1000000; ++i) { z = 2 * rand() - 1; t = 6.2831853 * rand(); r = sqrt(1 - z * z); printf \"%.6f %.6f %.6f\\n\", r * cos(t), r * sin(t), z } }"
                 OUTPUT_FILE "${WORK}/sphere_million.xyz" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the million points could not be written")
 endif()
-foreach(signal INT TERM)
-  execute_process(COMMAND "${TIMEOUT_PROGRAM}" -s ${signal} 1 "${PROGRAM}" closed "${WORK}/sphere_million.xyz"
-                          "${WORK}/interrupted.off" RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
-  if(NOT rc EQUAL 124) # what timeout returns when the time ran out and its signal ended the run
-    message(FATAL_ERROR "interrupted by SIG${signal}: the run was not interrupted (exit code ${rc})")
+# sh -c SCRIPT _ PROGRAM INPUT OUTPUT TEMPORARY SIGNAL: prints the exit status of the program
+set(interrupt_script [=[
+"$1" closed "$2" "$3" --max-memory 100000 >/dev/null 2>&1 &
+pid=$!
+n=0
+while [ ! -e "$4" ] && [ $n -lt 1000 ]; do sleep 0.01; n=$((n + 1)); done
+kill -s "$5" $pid
+wait $pid
+echo $?
+]=])
+foreach(signal TERM HUP INT)
+  file(REMOVE "${WORK}/interrupted.off")
+  execute_process(COMMAND "${SH_PROGRAM}" -c "${interrupt_script}" _ "${PROGRAM}" "${WORK}/sphere_million.xyz"
+                          "${WORK}/interrupted.off" "${WORK}/.interrupted.partial.off" ${signal}
+                  OUTPUT_VARIABLE status OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(signal STREQUAL "INT") # ignored in the background job
+    if(NOT status STREQUAL "0" OR NOT EXISTS "${WORK}/interrupted.off")
+      message(FATAL_ERROR "SIGINT ignored at the start: exit status ${status}, the run should be complete")
+    endif()
+    message(STATUS "SIGINT ignored at the start: still ignored, the run complete")
+    continue()
+  elseif(signal STREQUAL "TERM")
+    set(expected 143)
+  else()
+    set(expected 129)
+  endif()
+  if(NOT status STREQUAL expected)
+    message(FATAL_ERROR "interrupted by SIG${signal}: exit status ${status}, not ${expected} (the signal did not end the run)")
   endif()
   file(GLOB left "${WORK}/interrupted*" "${WORK}/.interrupted*")
   if(left)
     message(FATAL_ERROR "interrupted by SIG${signal}: left ${left}")
   endif()
-  message(STATUS "interrupted by SIG${signal}: nothing left")
+  message(STATUS "interrupted by SIG${signal}: exit status ${status}, nothing left")
 endforeach()
 file(REMOVE "${WORK}/sphere_million.xyz")
 

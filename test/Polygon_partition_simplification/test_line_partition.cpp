@@ -638,10 +638,6 @@ void test_validity_check()
   }
 }
 
-// The face part of the validity check (facial walks of the rotation system) against the
-// faces of CGAL's arrangement of the edges, on kinetic partitions with random edges removed
-// (which leaves dangling edges, bridges and pinched cell boundaries): same verdict, same
-// edges reported.
 // The last step of the rounding, on the square of test_validity_check() (its sides fixed, as the
 // sides of a kinetic partition's rectangle): what a defect leaves, and the cells after.
 void test_removal_of_defective_edges()
@@ -689,10 +685,10 @@ void test_removal_of_defective_edges()
     for(const auto& e : p.edges()) assert(e.line != 4 && e.line != 6);
     assert(cell_areas(p) == std::vector<double>({0.5, 0.5}));
   }
-  // an edge dangles into the square: removed with no defect counted, the sides joined
+  // an edge dangles into the square: removed (and counted), the sides joined
   {
     const Partition p = repaired({{4, 4, 8}}, removed);
-    assert(removed == 0 && p.is_valid() && p.number_of_edges() == 4 && p.number_of_cells() == 1);
+    assert(removed == 1 && p.is_valid() && p.number_of_edges() == 4 && p.number_of_cells() == 1);
   }
   // the vertical middle line twice, its two edges between the same two points: one is left
   {
@@ -701,8 +697,8 @@ void test_removal_of_defective_edges()
     assert(cell_areas(p) == std::vector<double>({0.5, 0.5}));
   }
   // the cross of the two middle lines, its center given twice (two points that coincide), each
-  // copy with one half of each line: the first edge at the center goes, the edge of the other
-  // line left dangling at its copy too, and the other copy's two edges cut a quarter off
+  // copy with one half of each line: the first edge at the center goes, then the edge of the
+  // other line left dangling at its copy, and the other copy's two edges cut a quarter off
   {
     std::vector<Partition::Vertex> vertices = points;
     vertices.push_back({{4, 5}}); // point 9, the center as point 8
@@ -716,11 +712,15 @@ void test_removal_of_defective_edges()
     assert(Partition(Partition::Frame(), lines, vertices, edges).defect().find("coincide") != std::string::npos);
     removed = PPS::internal::remove_defective_edges<Partition::Geom_traits>(lines, vertices, edges);
     const Partition p(Partition::Frame(), lines, vertices, edges);
-    assert(removed == 1 && p.is_valid() && p.number_of_edges() == 8);
+    assert(removed == 2 && p.is_valid() && p.number_of_edges() == 8); // one for the defect, one dangling
     assert(cell_areas(p) == std::vector<double>({0.25, 0.75}));
   }
 }
 
+// The face part of the validity check (facial walks of the rotation system) against the
+// faces of CGAL's arrangement of the edges, on kinetic partitions with random edges removed
+// (which leaves dangling edges, bridges and pinched cell boundaries): same verdict, same
+// edges reported.
 void test_faces_against_arrangement()
 {
   using Arrangement = CGAL::Arrangement_2<CGAL::Arr_non_caching_segment_basic_traits_2<K>>;

@@ -93,7 +93,10 @@ bool holds(const Enclosing_rectangle_2& r, const std::vector<Point>& hull)
 }
 
 // The rectangle of `hull` along `axis` (a unit vector): the extents of the projections of the
-// points, measured from the first point (differences of nearby coordinates are exact).
+// points, measured from the first point (differences of nearby coordinates are exact), widened
+// by 8 units in the last place of the largest coordinate (the rounding of the center to the
+// doubles moves the sides by that much) and 1e-8 of the extent, and again, doubled, until it
+// holds every point.
 template <class Point>
 Enclosing_rectangle_2 rectangle_along(const std::array<double, 2>& axis, const std::vector<Point>& hull)
 {
@@ -104,11 +107,18 @@ Enclosing_rectangle_2 rectangle_along(const std::array<double, 2>& axis, const s
     const double st[2] = {x * axis[0] + y * axis[1], -x * axis[1] + y * axis[0]};
     for(int k = 0; k < 2; ++k) { low[k] = std::min(low[k], st[k]); high[k] = std::max(high[k], st[k]); }
   }
+  double largest = 0;
+  for(const Point& q : hull) largest = std::max({largest, std::abs(double(q.x())), std::abs(double(q.y()))});
+  double widening = 8 * (std::nextafter(largest, HUGE_VAL) - largest) +
+                    1e-8 * std::max(high[0] - low[0], high[1] - low[1]);
   Enclosing_rectangle_2 r;
   r.axis = axis;
   const double s = (low[0] + high[0]) / 2, t = (low[1] + high[1]) / 2;
   r.center = {x0 + s * axis[0] - t * axis[1], y0 + s * axis[1] + t * axis[0]};
-  r.half_extent = {(high[0] - low[0]) / 2, (high[1] - low[1]) / 2};
+  for(int attempt = 0; attempt < 16; ++attempt, widening *= 2) {
+    r.half_extent = {(high[0] - low[0]) / 2 + widening, (high[1] - low[1]) / 2 + widening};
+    if(holds(r, hull)) break;
+  }
   return r;
 }
 

@@ -47,13 +47,12 @@ struct Rounded_partition_view
   std::array<std::size_t, 3> edge(std::size_t e) const { return {{edges[e].line, edges[e].source, edges[e].target}}; }
 };
 
-// Removes the edges with an end where no other edge is, repeatedly, then joins the two edges at
-// each point where exactly two edges of one line meet, and drops the points left without edges.
-// The edges stay sorted by (line, source, target).
+// One pass of remove_dangling_and_join(); returns the number of edges removed, joins and
+// repeated edges not counted.
 template <class Vertex, class Edge>
-void remove_dangling_and_join(std::vector<Vertex>& vertices, std::vector<Edge>& edges)
+std::size_t remove_dangling_and_join_once(std::vector<Vertex>& vertices, std::vector<Edge>& edges)
 {
-  const std::size_t nv = vertices.size();
+  const std::size_t nv = vertices.size(), given = edges.size();
   std::vector<std::size_t> degree(nv);
   for(;;) {
     std::fill(degree.begin(), degree.end(), 0);
@@ -64,6 +63,7 @@ void remove_dangling_and_join(std::vector<Vertex>& vertices, std::vector<Edge>& 
                 edges.end());
     if(edges.size() == before) break;
   }
+  const std::size_t dangling = given - edges.size();
   // two edges of one line at a point of degree 2, joined: the first one is kept and goes on to
   // the other end of the second one
   std::vector<std::vector<std::size_t>> incident(nv);
@@ -101,6 +101,23 @@ void remove_dangling_and_join(std::vector<Vertex>& vertices, std::vector<Edge>& 
   sort_distinct_edges(remaining);
   vertices.swap(kept_vertices);
   edges.swap(remaining);
+  return dangling;
+}
+
+// Removes the edges with an end where no other edge is, repeatedly, then joins the two edges at
+// each point where exactly two edges of one line meet, and drops the points left without edges;
+// all this again until nothing changes (a join can make an edge repeat another, whose removal
+// leaves an end alone). The edges stay sorted by (line, source, target). Returns the number of
+// edges removed (joins not counted: the joined edge covers both).
+template <class Vertex, class Edge>
+std::size_t remove_dangling_and_join(std::vector<Vertex>& vertices, std::vector<Edge>& edges)
+{
+  std::size_t removed = 0;
+  for(;;) {
+    const std::size_t points = vertices.size(), edge_count = edges.size();
+    removed += remove_dangling_and_join_once(vertices, edges);
+    if(vertices.size() == points && edges.size() == edge_count) return removed;
+  }
 }
 
 // Takes off each point the lines that have no edge (as canonical_partition() does), so that the
@@ -115,8 +132,9 @@ void drop_lines_without_edges(std::size_t number_of_lines, std::vector<Vertex>& 
 }
 
 // Removes edges of `edges` (see above) until the partition of `lines`, `vertices` and `edges`
-// is valid, or until only edges on fixed lines are involved in its defects. Returns the number
-// of edges removed for a defect (dangling edges and joins not counted). `GeomTraits`: a model of
+// is valid, or until only edges on fixed lines are involved in its defects (the partition is
+// then returned invalid, as `defect()` says). Returns the number of edges removed, dangling ones
+// included (joins not counted). `GeomTraits`: a model of
 // `PolygonPartitionSimplificationTraits_2`, whose kernels decide.
 template <class GeomTraits, class Line, class Vertex, class Edge>
 std::size_t remove_defective_edges(const std::vector<Line>& lines, std::vector<Vertex>& vertices, std::vector<Edge>& edges)
@@ -129,9 +147,9 @@ std::size_t remove_defective_edges(const std::vector<Line>& lines, std::vector<V
     drop_lines_without_edges(lines.size(), vertices, edges);
     const Rounded_partition_view<Line, Vertex, Edge> view{lines, vertices, edges};
     if(partition_defect<GeomTraits>(view, &defective, All_crossing_pairs<PK>()).empty()) return removed;
-    if(first) { // points left on one line by the rounds, joined before anything is removed
+    if(first) { // dangling edges and points left on one line by the rounds, before anything else
       const std::size_t points = vertices.size(), edge_count = edges.size();
-      remove_dangling_and_join(vertices, edges);
+      removed += remove_dangling_and_join(vertices, edges);
       if(vertices.size() != points || edges.size() != edge_count) continue;
     }
     const std::vector<std::array<double, 2>> position = point_positions(lines, vertices);
@@ -169,7 +187,7 @@ std::size_t remove_defective_edges(const std::vector<Line>& lines, std::vector<V
     for(std::size_t e = 0; e < edges.size(); ++e)
       if(!remove[e]) kept.push_back(edges[e]);
     edges.swap(kept);
-    remove_dangling_and_join(vertices, edges);
+    removed += remove_dangling_and_join(vertices, edges);
   }
 }
 
