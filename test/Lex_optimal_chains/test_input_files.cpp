@@ -103,28 +103,24 @@ void test_point_files()
   // found the first (a property taken for one of the last of no element), the int coordinate and
   // the names given twice
   const std::string ascii_header = "ply\nformat ascii 1.0\n";
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("property_first.ply", ascii_header +
-                      "property float x\nelement vertex 1\nproperty float y\nproperty float z\nend_header\n0 0\n")); },
-                    "a property before any element");
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("no_property.ply", ascii_header +
-                      "element vertex 3\nelement face 1000\nend_header\n")); },
-                    "has no property");
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("huge_count.ply", ascii_header +
-                      "element vertex 4000000000\nproperty double x\nproperty double y\nproperty double z\nend_header\n0 0 0\n")); },
-                    "cannot hold the 4000000000 items declared");
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("negative_count.ply", ascii_header +
-                      "element vertex -1\nproperty double x\nend_header\n")); },
-                    "is not a whole number");
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("int_coordinate.ply", ascii_header +
-                      "element vertex 1\nproperty float x\nproperty int y\nproperty float z\nend_header\n0 0 0\n")); },
-                    "the point coordinate 'y' is not a float or a double");
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("one_name_twice.ply", ascii_header +
-                      "element vertex 1\nproperty float x\nproperty float y\nproperty float z\nproperty uint c\n"
-                      "property ushort c\nend_header\n0 0 0 1 1\n")); },
-                    "a second property named 'c' in one element");
-  expect_unreadable([&] { LOC::IO::read_point_file<Point>(file("element_twice.ply", ascii_header +
-                      "element vertex 1\nproperty float x\nelement vertex 1\nproperty int x\nend_header\n0\n0\n")); },
-                    "a second element named 'vertex'");
+  struct Refused_header { const char* file; const char* after_format; const char* reason; };
+  const Refused_header refused_headers[] = {
+    {"property_first.ply", "property float x\nelement vertex 1\nproperty float y\nproperty float z\nend_header\n0 0\n",
+     "a property before any element"},
+    {"no_property.ply", "element vertex 3\nelement face 1000\nend_header\n", "has no property"},
+    {"huge_count.ply", "element vertex 4000000000\nproperty double x\nproperty double y\nproperty double z\nend_header\n0 0 0\n",
+     "cannot hold the 4000000000 items declared"},
+    {"negative_count.ply", "element vertex -1\nproperty double x\nend_header\n", "is not a whole number"},
+    {"int_coordinate.ply", "element vertex 1\nproperty float x\nproperty int y\nproperty float z\nend_header\n0 0 0\n",
+     "the point coordinate 'y' is not a float or a double"},
+    {"one_name_twice.ply",
+     "element vertex 1\nproperty float x\nproperty float y\nproperty float z\nproperty uint c\nproperty ushort c\n"
+     "end_header\n0 0 0 1 1\n",
+     "a second property named 'c' in one element"},
+    {"element_twice.ply", "element vertex 1\nproperty float x\nelement vertex 1\nproperty int x\nend_header\n0\n0\n",
+     "a second element named 'vertex'"}};
+  for(const Refused_header& r : refused_headers)
+    expect_unreadable([&] { LOC::IO::read_point_file<Point>(file(r.file, ascii_header + r.after_format)); }, r.reason);
   const std::string faces = ascii_header + "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
   assert(LOC::IO::read_point_file<Point>(file("faces.ply", faces + "3 0 1 2\n")).size() == 3);

@@ -656,13 +656,18 @@ void test_removal_of_defective_edges()
                                               {{0, 5}}, {{1, 5}}, {{4, 5}}};
   const std::vector<Partition::Edge> sides{{0, 0, 6}, {0, 3, 6}, {1, 1, 7}, {1, 2, 7},
                                            {2, 0, 4}, {2, 1, 4}, {3, 2, 5}, {3, 3, 5}};
-  auto repaired = [&](std::vector<Partition::Edge> extra, std::size_t& removed) {
+  // the square with `extra` edges (and `more_points` after its points), repaired; `defect`: a
+  // part of what is wrong before
+  auto repaired = [&](std::vector<Partition::Edge> extra, std::size_t& removed,
+                      const std::vector<Partition::Vertex>& more_points = {}, const std::string& defect = "") {
     std::vector<Partition::Edge> edges = sides;
     edges.insert(edges.end(), extra.begin(), extra.end());
     std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
       return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
     });
     std::vector<Partition::Vertex> vertices = points;
+    vertices.insert(vertices.end(), more_points.begin(), more_points.end());
+    assert(Partition(Partition::Frame(), lines, vertices, edges).defect().find(defect) != std::string::npos);
     assert(!Partition(Partition::Frame(), lines, vertices, edges).is_valid());
     removed = PPS::internal::remove_defective_edges<Partition::Geom_traits>(lines, vertices, edges);
     return Partition(Partition::Frame(), lines, vertices, edges);
@@ -679,7 +684,7 @@ void test_removal_of_defective_edges()
   // the middle edges cross without a point at the center: one goes (the first by its line, as
   // they are as long), the points it leaves on the bottom and top sides are joined away
   {
-    const Partition p = repaired({{4, 4, 5}, {5, 6, 7}}, removed);
+    const Partition p = repaired({{4, 4, 5}, {5, 6, 7}}, removed, {}, "cross");
     assert(removed == 1 && p.is_valid());
     assert(p.number_of_edges() == 7 && p.number_of_vertices() == 6);
     for(const auto& e : p.edges()) assert(e.line != 4 && e.line != 6);
@@ -687,12 +692,12 @@ void test_removal_of_defective_edges()
   }
   // an edge dangles into the square: removed (and counted), the sides joined
   {
-    const Partition p = repaired({{4, 4, 8}}, removed);
+    const Partition p = repaired({{4, 4, 8}}, removed, {}, "dangles");
     assert(removed == 1 && p.is_valid() && p.number_of_edges() == 4 && p.number_of_cells() == 1);
   }
   // the vertical middle line twice, its two edges between the same two points: one is left
   {
-    const Partition p = repaired({{4, 4, 5}, {6, 4, 5}}, removed);
+    const Partition p = repaired({{4, 4, 5}, {6, 4, 5}}, removed, {}, "overlap");
     assert(removed == 1 && p.is_valid() && p.number_of_edges() == 7); // the sides joined at 6 and 7
     assert(cell_areas(p) == std::vector<double>({0.5, 0.5}));
   }
@@ -700,18 +705,9 @@ void test_removal_of_defective_edges()
   // copy with one half of each line: the first edge at the center goes, then the edge of the
   // other line left dangling at its copy, and the other copy's two edges cut a quarter off
   {
-    std::vector<Partition::Vertex> vertices = points;
-    vertices.push_back({{4, 5}}); // point 9, the center as point 8
-    std::vector<Partition::Edge> edges = sides;
-    for(const Partition::Edge& e : {Partition::Edge{4, 4, 8}, Partition::Edge{5, 6, 8}, Partition::Edge{4, 5, 9},
-                                    Partition::Edge{5, 7, 9}})
-      edges.push_back(e);
-    std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
-      return std::tie(x.line, x.source, x.target) < std::tie(y.line, y.source, y.target);
-    });
-    assert(Partition(Partition::Frame(), lines, vertices, edges).defect().find("coincide") != std::string::npos);
-    removed = PPS::internal::remove_defective_edges<Partition::Geom_traits>(lines, vertices, edges);
-    const Partition p(Partition::Frame(), lines, vertices, edges);
+    const Partition p = repaired({{4, 4, 8}, {5, 6, 8}, {4, 5, 9}, {5, 7, 9}}, removed,
+                                 {{{4, 5}}}, // point 9, the center as point 8
+                                 "coincide");
     assert(removed == 2 && p.is_valid() && p.number_of_edges() == 8); // one for the defect, one dangling
     assert(cell_areas(p) == std::vector<double>({0.25, 0.75}));
   }
