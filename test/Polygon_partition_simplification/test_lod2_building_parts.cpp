@@ -29,11 +29,14 @@
 //   step wall inside stay. On a stepped
 //   footprint, the step wall on the line of two footprint edges keeps the part between them,
 //   the parts along the edges are removed.
+// - internal::close_outline_corners, on a square outline with a corner cut off and on pieces
+//   where it must add nothing (see test_outline_corners_are_closed()).
 // the package's headers first: they read Boost's graph headers with g++'s false positives
 // silenced (internal/CGAL_compatibility.h), before CGAL 6's triangulate_faces.h reads them
 #include <CGAL/Polygon_partition_simplification/Building_surface_type.h>
 #include <CGAL/Polygon_partition_simplification/IO/CityJSON.h>
 #include <CGAL/Polygon_partition_simplification/Input_error.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/close_outline_corners_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/footprint_segments_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Metric_alpha_expansion.h>
@@ -901,6 +904,54 @@ void test_ridges_reach_the_footprint()
   assert(is(diagonal[0], 0, 0, 10, 10));
 }
 
+// Corners cut off by a roof outline are closed: on a 20 m square outline whose corner (20, 0) a
+// 2.6 m piece cuts off, with ends a few decimetres apart as outlines come, the sides' lines
+// are extended to the corner, as facade segments of the sides' planes; the other corners, a
+// piece longer than the longest, a short piece between two nearly parallel pieces (a jog), a
+// short ridge and a piece whose neighbours run away from their meeting point add nothing.
+void test_outline_corners_are_closed()
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Segment = PPS::Building_segment_2<K>;
+  std::vector<Segment> square{
+    piece(0, 0, 18.2, 0.02, true, 1, 1),   // bottom side, plane 1
+    piece(18.5, 0.1, 19.9, 2.3, true, 1, 1), // cuts the corner (20, 0) off
+    piece(20, 2.1, 20, 20, true, 2, 2),    // right side, plane 2 (its end 0.2 m from the piece's)
+    piece(20, 20, 0, 20, true, 1, 1),
+    piece(0, 20, 0, 0, true, 3, 5)};       // a wall plane 3 meeting roof plane 5
+  const std::vector<Segment> given = square;
+  PPS::internal::close_outline_corners(square, 0.6, 3.);
+  assert(square.size() == given.size() + 2);
+  for(std::size_t i = 0; i < given.size(); ++i) assert(square[i].segment == given[i].segment);
+  // the two added segments run from the sides' ends to where their lines meet
+  const K::Line_2 bottom = given[0].segment.supporting_line(), right = given[2].segment.supporting_line();
+  const auto corner = CGAL::intersection(bottom, right);
+  const K::Point_2* x = boost::get<K::Point_2>(&*corner);
+  assert(x != nullptr && CGAL::squared_distance(*x, K::Point_2(20, 0)) < 0.1);
+  const Segment& from_bottom = square[given.size()].first_plane == 1 ? square[given.size()] : square[given.size() + 1];
+  const Segment& from_right = square[given.size()].first_plane == 1 ? square[given.size() + 1] : square[given.size()];
+  assert(from_bottom.is_facade && from_bottom.first_plane == 1 && from_bottom.second_plane == 1);
+  assert(from_right.is_facade && from_right.first_plane == 2 && from_right.second_plane == 2);
+  assert(from_bottom.segment.source() == given[0].segment.target() && CGAL::squared_distance(from_bottom.segment.target(), *x) < 1e-18);
+  assert(from_right.segment.source() == given[2].segment.source() && CGAL::squared_distance(from_right.segment.target(), *x) < 1e-18);
+  // nothing is added for:
+  const std::vector<std::vector<Segment>> unchanged{
+    {piece(0, 0, 16, 0, true, 1, 1), piece(16.3, 0.1, 19.9, 4.3, true, 1, 1), piece(20, 4.2, 20, 20, true, 1, 1)}, // 5.5 m piece
+    {piece(0, 0, 10, 0, true, 1, 1), piece(10.1, 0, 10.6, 0.5, true, 1, 1), piece(10.7, 0.5, 20, 0.6, true, 1, 1)}, // a jog
+    {piece(0, 0, 18.2, 0, true, 1, 1), piece(18.5, 0.1, 19.9, 2.3, false, 1, 2), piece(20, 2.1, 20, 20, true, 2, 2)}, // a ridge
+    {piece(0, 0, 17.5, 0, true, 1, 1), piece(18.5, 0.1, 19.9, 2.3, true, 1, 1), piece(20, 2.1, 20, 20, true, 2, 2)}}; // 1 m gap
+  for(std::vector<Segment> segments : unchanged) {
+    const std::size_t n = segments.size();
+    PPS::internal::close_outline_corners(segments, 0.6, 3.);
+    assert(segments.size() == n);
+  }
+  // a neighbour that runs away from where its line meets the other's: that point is behind the
+  // end of the other
+  std::vector<Segment> away{piece(0, 0, 10, 0, true, 1, 1), piece(10, 0.2, 10, 2, true, 1, 1), piece(10.1, 2.2, 12, 4, true, 1, 1)};
+  PPS::internal::close_outline_corners(away, 0.6, 3.);
+  assert(away.size() == 3);
+}
+
 int main()
 {
   test_alpha_expansion_against_brute_force();
@@ -912,6 +963,7 @@ int main()
   facade_evidence::test_facade_evidence_across_a_courtyard();
   test_footprint_replaces_outlines();
   test_ridges_reach_the_footprint();
+  test_outline_corners_are_closed();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;
 }

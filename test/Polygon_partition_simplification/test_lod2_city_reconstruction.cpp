@@ -303,6 +303,10 @@ void test_building_of_tile(const T::City& city, std::size_t index, const std::st
 //   The roof outline along that wall runs along the intersection of the main roof with the wall
 //   above the annex; dropped whole, it leaves the wall's line stopped at the annex, and the
 //   model's main part 5.2 m past the truth (6.19 m). Its part beyond the intersection stays.
+// - 110, L-shaped: the outline of its roof cuts a corner off (1.27 m from the truth's corner)
+//   with a short piece. The lines of the two sides are extended to the corner
+//   (close_outline_corners()), and the roof points of the small cell there refute the ground
+//   (Lift_settings::points_refute_ground): with either alone, the corner stays cut off.
 void test_buildings_without_footprints()
 {
   T::City_options options;
@@ -311,6 +315,7 @@ void test_buildings_without_footprints()
   assert(city.footprint_holes[59].size() == 1);
   test_building_of_tile(city, 59, "courtyard", 1.5);
   test_building_of_tile(city, 58, "stepped", 1.5);
+  test_building_of_tile(city, 110, "l_shaped", 1.0);
 }
 
 int main()

@@ -4,7 +4,9 @@
 // threads in one run: the time per input point, the ratio of the two times, whether the two
 // CityJSON outputs are byte-identical, valid buildings and fallbacks, the distances of the
 // models to the truth both ways (mean and largest, sampled; without footprints, buildings that
-// touch are one truth, the union of their solids), and the peak memory.
+// touch are one truth, the union of their solids), how many truths and models are farther than
+// 1 m from the other, and the peak memory. With BENCHMARK_LOD2_CITY_LIST_ALL set in the
+// environment, every truth and model farther than 1 m is listed.
 
 #include "synthetic_city.h"
 
@@ -146,10 +148,19 @@ static void print_distances(const std::vector<Building>& buildings, const T::Cit
     worst.push_back({mean_max(T::sample_triangles(one.triangles(), 4), to_truth).second, "model " + std::to_string(b.id)});
   }
   std::sort(worst.rbegin(), worst.rend());
-  std::cout << "  farthest:";
+  const auto beyond = [&](const char* side) {
+    return std::count_if(worst.begin(), worst.end(), [&](const auto& w) {
+      return w.first > 1.0 && w.second.rfind(side, 0) == 0;
+    });
+  };
+  std::cout << "  beyond 1 m: " << beyond("truth") << " of " << surfaces.size() << " truths, " << beyond("model")
+            << " of " << buildings.size() << " models; farthest:";
   for(std::size_t i = 0; i < std::min<std::size_t>(6, worst.size()); ++i)
     std::cout << " " << worst[i].second << " " << worst[i].first << " m;";
   std::cout << std::endl;
+  if(std::getenv("BENCHMARK_LOD2_CITY_LIST_ALL"))
+    for(const auto& [distance, name] : worst)
+      if(distance > 1.0) std::cout << "    " << name << " " << distance << " m" << std::endl;
   std::cout << "  truth to model: mean " << t2m.first << " m, max " << t2m.second << " m; model to truth: mean "
             << m2t.first << " m, max " << m2t.second << " m" << std::endl;
 }

@@ -146,6 +146,7 @@ City_building<Point> model_building(const Classified_points<Kernel>& tile, const
     total.start();
     LOD2_settings own_settings = settings;
     if(job.footprint != nullptr) own_settings.footprint = *job.footprint;
+    own_settings.lift.points_refute_ground = true; // the building's own points and its ground
     Input input(std::move(points), std::move(normals), own_settings);
     Surface_mesh<Point> model;
     result.report = reconstruct_lod2_from_input(input, model, np, total);

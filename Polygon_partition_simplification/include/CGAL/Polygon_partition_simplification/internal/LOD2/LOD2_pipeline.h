@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/Height_functions.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/building_meshes_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/building_segments_2.h>
+#include <CGAL/Polygon_partition_simplification/internal/LOD2/close_outline_corners_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/detect_building_planes_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/facade_evidence_3.h>
 #include <CGAL/Polygon_partition_simplification/internal/LOD2/footprint_segments_2.h>
@@ -404,6 +405,7 @@ LOD2_report reconstruct_lod2_from_input(Input& input, CGAL::Surface_mesh<Point>&
   auto segments = building_segments<Kernel>(input.points, planes, input.settings.segments_for(planes));
   replace_outlines_by_footprint(input.settings.footprint, input.settings.lift.facade_distance, segments);
   extend_ridges_to_footprint(input.settings.footprint, segments);
+  if(input.settings.footprint.empty()) close_outline_corners(segments, 2 * planes.spacing, 10 * planes.spacing);
   const std::vector<typename Kernel::Segment_2> segments_2 = distinct_segments(segments);
   for(const auto& s : segments) report.facade_segments += s.is_facade ? 1 : 0;
   report.segments = segments_2.size();

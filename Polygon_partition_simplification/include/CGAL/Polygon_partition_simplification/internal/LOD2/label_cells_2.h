@@ -41,6 +41,9 @@ struct Lift_settings
   /// in a cell where a roof label is refuted, a point below its plane costs its depth up to this
   /// fraction of the plane's height above the ground (instead of `height_threshold`)
   double refuting_depth = 0.5;
+  /// the points are those of one building (classified input): the ground label is refuted in a
+  /// cell as a roof label is, by its points high above the ground (see lift_data_term())
+  bool points_refute_ground = false;
 };
 
 /// An edge of the cell arrangement for the lift: its two cells, its ends, its weight.
@@ -129,6 +132,14 @@ inline std::vector<bool> open_above(const std::vector<std::array<double, 3>>& po
 /// `height_threshold` per point, which roofs over every square yard narrower than
 /// 4 `mu` / `height_threshold` times the height of its walls (1.6 times with the default
 /// settings) unless its walls are seen as facades.
+///
+/// With `points_refute_ground` (the points of one classified building, no clutter among them),
+/// the ground label is refuted the same way by the points open above that lie more than
+/// `height_threshold` above the ground: each costs `refuting_depth` times its height. A small
+/// cell of roof points at a corner of a building, whose two outer edges are longer than the
+/// edge it shares with the roof, otherwise costs less as ground (its area times
+/// `height_threshold`, and the wall along the shorter edge) and the model loses the corner.
+/// Without classes, points high above the ground may be trees, which this would make roofs.
 inline std::vector<std::vector<double>> lift_data_term(const Cell_arrangement_2& cells, const Lift_evidence& evidence,
                                                        const Height_functions& heights, const Lift_settings& settings)
 {
@@ -157,6 +168,11 @@ inline std::vector<std::vector<double>> lift_data_term(const Cell_arrangement_2&
         if(points && !evidence.open_above.empty() && evidence.open_above[i] && l != Height_functions::ground_label &&
            difference > settings.height_threshold) {
           cap = std::max(cap, settings.refuting_depth * (plane - ground));
+          ++refuting[c][l];
+        }
+        if(settings.points_refute_ground && points && !evidence.open_above.empty() && evidence.open_above[i] &&
+           l == Height_functions::ground_label && -difference > settings.height_threshold) {
+          cap = std::max(cap, settings.refuting_depth * (-difference));
           ++refuting[c][l];
         }
         refuted_cost[c][l] += std::min(cap, residual);
