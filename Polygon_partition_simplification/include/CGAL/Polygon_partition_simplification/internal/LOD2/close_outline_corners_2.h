@@ -67,7 +67,7 @@ inline std::optional<std::array<double, 2>> corner_ahead(const Facade_end_2& a, 
 /// where two sides of a building meet it often cuts the corner off with a short piece (the
 /// points thin out toward a corner, and a hip or a gable splits them between two planes). The
 /// kinetic partition then stops both sides on that piece, the corner is never a cell of its own,
-/// and the model misses it (up to 1.3 m on the synthetic city tiles). For each facade segment B
+/// and the model misses it. For each facade segment B
 /// at most `longest` long, whose two ends are within `radius` of an end of another facade
 /// segment (A and C, the nearest ends), the lines of A and C are extended to where they meet,
 /// when both run toward that corner, they make at least 30 degrees and the corner is within the
