@@ -62,8 +62,9 @@ build_programs() {
   command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DURBAN_BUILD_BENCHMARKS=ON > "$out/configure.log"
   compile "$build" benchmark_lod2_buildings
-  # grep without -q reads the whole list: with -q it exits at the first match, the build tool
-  # gets SIGPIPE, and pipefail makes the test fail whenever the target is there
+  # grep without -q reads the whole list: with -q it can exit at the first match while the
+  # build tool still writes, which then gets SIGPIPE, and pipefail fails the test although the
+  # target is there
   if cmake --build "$build" --target help 2> /dev/null | grep "benchmark_polyfit" > /dev/null; then
     compile "$build" benchmark_polyfit
   else
