@@ -79,26 +79,6 @@ private:
                   FT, Exact_constructions_kernel, Exact_predicates_kernel>::value, "");
 };
 
-namespace Polygon_partition_simplification {
-namespace internal {
-
-// The geometric traits that a template argument `T` of `Line_partition_2` stands for: `T` itself
-// when it is a model of PolygonPartitionSimplificationTraits_2 (it has an
-// `Exact_constructions_kernel`), `Polygon_partition_simplification_traits_2<T>` when it is a
-// kernel.
-template <class T, class = void>
-struct Geom_traits_of
-{
-  using type = Polygon_partition_simplification_traits_2<T>;
-};
-template <class T>
-struct Geom_traits_of<T, std::void_t<typename T::Exact_constructions_kernel>>
-{
-  using type = T;
-};
-
-} // namespace internal
-} // namespace Polygon_partition_simplification
 } // namespace CGAL
 
 #endif // CGAL_POLYGON_PARTITION_SIMPLIFICATION_TRAITS_2_H

@@ -6,7 +6,11 @@
 
 #include <CGAL/license/Lex_optimal_chains.h>
 
+#include <CGAL/Lex_optimal_chains/internal/is_prime.h>
+
 #include <CGAL/Exact_rational.h>
+#include <CGAL/assertions.h>
+#include <CGAL/use.h>
 
 #include <cstdint>
 
@@ -33,22 +37,18 @@ struct Z2_field
   /// the product
   static Value multiply(Value a, Value b) { return Value(a & b); }
   /// the quotient by a non-zero element
-  static Value divide(Value a, Value) { return a; }
+  /// \pre `b == 1`
+  static Value divide(Value a, Value b)
+  {
+    CGAL_precondition(b == 1);
+    CGAL_USE(b);
+    return a;
+  }
   /// true for zero
   static bool is_zero(Value a) { return a == 0; }
   /// the image of an integer
   static Value from_integer(long k) { return Value(k & 1); }
 };
-
-namespace internal {
-constexpr bool is_prime(std::uint32_t p)
-{
-  if(p < 2) return false;
-  for(std::uint32_t d = 2; std::uint64_t(d) * d <= p; ++d)
-    if(p % d == 0) return false;
-  return true;
-}
-} // namespace internal
 
 /*!
 \ingroup PkgLexOptimalChainsRef
@@ -74,14 +74,17 @@ struct Zp_field
   /// the product
   static Value multiply(Value a, Value b) { return Value(std::uint64_t(a) * b % P); }
   /// the quotient by a non-zero element
+  /// \pre `!is_zero(b)` and `b < P`
   static Value divide(Value a, Value b) { return multiply(a, inverse(b)); }
   /// true for zero
   static bool is_zero(Value a) { return a == 0; }
   /// the image of an integer
   static Value from_integer(long k) { return Value(((k % long(P)) + long(P)) % long(P)); }
   /// the inverse of a non-zero element (Fermat)
+  /// \pre `!is_zero(b)` and `b < P`
   static Value inverse(Value b)
   {
+    CGAL_precondition(b != 0 && b < P);
     Value r = 1, x = b;
     for(std::uint32_t e = P - 2; e != 0; e >>= 1, x = multiply(x, x))
       if(e & 1) r = multiply(r, x);
@@ -107,7 +110,12 @@ struct Q_field
   /// the product
   static Value multiply(const Value& a, const Value& b) { return a * b; }
   /// the quotient by a non-zero element
-  static Value divide(const Value& a, const Value& b) { return a / b; }
+  /// \pre `!is_zero(b)`
+  static Value divide(const Value& a, const Value& b)
+  {
+    CGAL_precondition(b != 0);
+    return a / b;
+  }
   /// true for zero
   static bool is_zero(const Value& a) { return a == 0; }
   /// the image of an integer

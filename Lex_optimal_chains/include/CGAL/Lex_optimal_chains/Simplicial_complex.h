@@ -8,6 +8,8 @@
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <set>
@@ -81,9 +83,11 @@ public:
   }
 
   /// The `i`-th `k`-simplex.
+  /// \pre `0 <= k <= dimension()` and `i < number_of_simplices(k)`
   const Simplex& simplex(int k, std::size_t i) const
   {
     finalize();
+    CGAL_precondition(k >= 0 && k < int(simplices_.size()) && i < simplices_[k].size());
     return simplices_[k][i];
   }
 
@@ -98,6 +102,7 @@ public:
   }
 
   /// The boundary of the `i`-th `k`-simplex: pairs (index of a `(k-1)`-face, sign).
+  /// \pre `0 <= k <= dimension()` and `i < number_of_simplices(k)`
   std::vector<std::pair<std::uint32_t, int>> boundary(int k, std::size_t i) const
   {
     std::vector<std::pair<std::uint32_t, int>> b;

@@ -8,12 +8,14 @@
 
 #include <CGAL/Polygon_partition_simplification_traits_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Geom_traits_check.h>
+#include <CGAL/Polygon_partition_simplification/internal/Geom_traits_of.h>
 #include <CGAL/Polygon_partition_simplification/internal/Line_geometry_2.h>
 #include <CGAL/Polygon_partition_simplification/internal/Partition_validity_2.h>
 
 #include <CGAL/Arr_non_caching_segment_basic_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
+#include <CGAL/assertions.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
@@ -186,14 +188,17 @@ public:
   std::size_t number_of_edges() const { return edges_.size(); }
 
   /// coordinates of point `v` in the normalized frame
+  /// \pre `v < number_of_vertices()`
   std::array<double, 2> normalized_point(std::size_t v) const
   {
+    CGAL_precondition(v < vertices_.size());
     return internal::point_of_lines(
       vertices_[v].lines, [this](std::size_t l) -> const internal::Vector_3d& { return lines_[l].coefficients; },
       [this](std::size_t l) { return lines_[l].is_fixed; });
   }
 
   /// coordinates of point `v` (input frame)
+  /// \pre `v < number_of_vertices()`
   Point_2 point(std::size_t v) const
   {
     const std::array<double, 2> p = normalized_point(v);
@@ -201,8 +206,10 @@ public:
   }
 
   /// edge `e` as a segment (input frame)
+  /// \pre `e < number_of_edges()`
   Segment_2 segment(std::size_t e) const
   {
+    CGAL_precondition(e < edges_.size());
     return traits_.construct_segment_2_object()(point(edges_[e].source), point(edges_[e].target));
   }
 
@@ -267,10 +274,12 @@ public:
   }
 
   /// writes the cells (bounded faces) as polygons with holes in input coordinates; returns
-  /// the output iterator. Requires `is_valid()`.
+  /// the output iterator.
+  /// \pre `is_valid()` (checked when `CGAL_CHECK_EXPENSIVE` is defined: it builds an arrangement)
   template <class OutputIterator>
   OutputIterator cells(OutputIterator out) const
   {
+    CGAL_expensive_precondition(is_valid());
     const Planar_arrangement arrangement = planar_arrangement();
     // the orientation is decided on the double coordinates of the vertices, with the predicates
     // of the exact predicates kernel (not with those of the polygon's kernel, which may be inexact)
