@@ -11,7 +11,10 @@
 #                                     against Debian's CGAL 5.5.1; then the tests of both packages
 #                                     again against CGAL 6.0.1 (Debian 13's
 #                                     libcgal-dev, unpacked into build/cgal6 by
-#                                     scripts/fetch_cgal6.sh, never installed), in build-cgal6/;
+#                                     scripts/fetch_cgal6.sh, never installed), in build-cgal6/,
+#                                     with the headless tests of the plugins in CGAL 6.0.1's
+#                                     CGAL Lab (Qt6: Debian 12's Qt 6.4; the Lab's sources
+#                                     from Debian 13's libcgal-demo, unpacked the same way);
 #                                     then each fuzz harness of a reader for 20 s (scripts/fuzz.sh:
 #                                     libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer,
 #                                     Debian's clang)
@@ -33,6 +36,10 @@ if [ "$mode" = test ]; then packages+=(libopenmpi-dev openmpi-bin debian-archive
 # the Polyhedron demo (Qt5, QtScript, CGAL's Qt5 headers) and its headless run (Xvfb, Mesa)
 if [ "$mode" != run ]; then
   packages+=(qtbase5-dev qtscript5-dev libqt5svg5-dev libqt5opengl5-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri)
+fi
+# CGAL Lab, CGAL 6's demo (Qt6, its QJSEngine from Qt Declarative), for the CGAL 6.0.1 pass
+if [ "$mode" = test ]; then
+  packages+=(qt6-base-dev qt6-declarative-dev qt6-svg-dev qt6-tools-dev libqt6opengl6-dev qt6-qpa-plugins)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -83,10 +90,10 @@ else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DURBAN_BUILD_DEMO=ON
   cmake --build build -j"$jobs"
   (cd build && ctest --output-on-failure -j"$jobs")
-  # the second pass: only the test folders of the packages and the programs their tests run,
-  # without the MPI programs (the sources of lod2_reconstruct and lex_reconstruct, built once
-  # more), the other examples and the demo
-  KINDS=Tests JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF
+  # the second pass: the examples, programs and tests of the packages and the plugins in CGAL
+  # Lab are built (not the MPI programs: the sources of lod2_reconstruct and lex_reconstruct once
+  # more); the tests of the test folders and of the demo run
+  KINDS="Tests Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF -DURBAN_BUILD_DEMO=ON
   # the readers under libFuzzer, from their seed corpora (fuzz_kinetic_partition, at about 16
   # scenes a second, is run on its own; ctest replays its corpus)
   bash scripts/fuzz.sh 20 fuzz_point_file fuzz_polyline_file fuzz_segments_file fuzz_footprints

@@ -7,7 +7,9 @@
 # The build is `all` of that configuration (both packages: tests, examples, programs); PACKAGE
 # (Lex_optimal_chains, Polygon_partition_simplification; default both) and KINDS choose the tests
 # that ctest runs. JOBS (default 2) jobs build and test; the compiler goes through ccache when present (CCACHE_DISABLE=1: not).
-# KINDS (default "Tests Examples"): the tests of the test folders, of the example folders, or both.
+# KINDS (default "Tests Examples"): the tests of the test folders, of the example folders, or both;
+# and Demo: the headless tests of the plugins in CGAL Lab (configure with -DURBAN_BUILD_DEMO=ON;
+# CGAL's Qt6 headers and Lab sources are then unpacked too: scripts/fetch_cgal6.sh --lab).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,7 +30,10 @@ done
 [ ${#packages[@]} -gt 0 ] || packages=(Lex_optimal_chains Polygon_partition_simplification)
 jobs="${JOBS:-2}"
 
-cgal_dir="$(bash scripts/fetch_cgal6.sh)" || fail "no CGAL 6.0.1 (scripts/fetch_cgal6.sh failed)"
+kinds=(${KINDS:-Tests Examples})
+fetch_options=()
+case " ${kinds[*]} " in *" Demo "*) fetch_options=(--lab) ;; esac
+cgal_dir="$(bash scripts/fetch_cgal6.sh "${fetch_options[@]}")" || fail "no CGAL 6.0.1 (scripts/fetch_cgal6.sh failed)"
 mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DCGAL_DIR="$cgal_dir" "$@" \
   | tee "$build/configure.log" || fail "cmake could not configure $build"
@@ -36,18 +41,19 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DCGAL_DIR=
 cgal="$(sed -n 's/^-- CGAL \([0-9][0-9.]*\): /\1 /p' "$build/configure.log" | tail -n1)"
 [ "${cgal%% *}" = "6.0.1" ] || fail "the build uses CGAL '${cgal:-?}', not 6.0.1 (CGAL_DIR=$cgal_dir)"
 
-# the labels of the tests to run: the test and/or example folders of the packages
-kinds=(${KINDS:-Tests Examples})
+# the labels of the tests to run: the test and/or example folders of the packages, the demo
 labels=""
-for package in "${packages[@]}"; do
-  for kind in "${kinds[@]}"; do
-    case "$kind" in Tests|Examples) labels+="${package}_${kind}|" ;; *) fail "unknown kind '$kind' (Tests or Examples)" ;; esac
-  done
+for kind in "${kinds[@]}"; do
+  case "$kind" in
+    Tests|Examples) for package in "${packages[@]}"; do labels+="${package}_${kind}|"; done ;;
+    Demo) labels+="demo|" ;;
+    *) fail "unknown kind '$kind' (Tests, Examples or Demo)" ;;
+  esac
 done
 labels="^(${labels%|})$"
 
-# the tests, examples and programs of the packages: `all` of this configuration (no benchmark,
-# no demo), built in parallel (a list of targets would be built one after the other)
+# the tests, examples and programs of the packages (and the demo with -DURBAN_BUILD_DEMO=ON):
+# `all` of this configuration, built in parallel (a list of targets would be built one after the other)
 [ -n "$(cd "$build" && ctest -N -L "$labels" | grep -m1 'compilation')" ] || fail "no compilation test labelled $labels in $build"
 cmake --build "$build" -j"$jobs" 2>&1 | tee "$build/build.log" \
   || fail "the build failed (see $build/build.log)"

@@ -41,8 +41,6 @@
 #include "Scene_surface_mesh_item.h"
 #include "SMesh_type.h"
 
-#include <CGAL/Three/Polyhedron_demo_plugin_helper.h>
-#include <CGAL/Three/Polyhedron_demo_plugin_interface.h>
 #include <CGAL/Three/Three.h>
 #include <CGAL/Three/Viewer_interface.h>
 
@@ -58,6 +56,7 @@
 #include <CGAL/Random.h>
 
 #include "ui_Lex_optimal_chains_dialog.h"
+#include "Demo_compatibility.h"
 #include "View_snapshot.h"
 
 #include <functional>
@@ -258,11 +257,16 @@ private:
   QCheckBox* relative_ = new QCheckBox(this);
 };
 
-class Polyhedron_demo_lex_optimal_chains_plugin : public QObject, public CGAL::Three::Polyhedron_demo_plugin_helper
+class Polyhedron_demo_lex_optimal_chains_plugin : public QObject, public Urban_demo::Plugin_helper
 {
   Q_OBJECT
+#ifdef URBAN_DEMO_CGAL_LAB // see Demo_compatibility.h
+  Q_INTERFACES(CGAL::Three::CGAL_Lab_plugin_interface)
+  Q_PLUGIN_METADATA(IID "com.geometryfactory.CGALLab.PluginInterface/1.0")
+#else
   Q_INTERFACES(CGAL::Three::Polyhedron_demo_plugin_interface)
   Q_PLUGIN_METADATA(IID "com.geometryfactory.PolyhedronDemo.PluginInterface/1.0")
+#endif
 
 public:
   void init(QMainWindow* mainWindow, CGAL::Three::Scene_interface* scene_interface, Messages_interface*) override
@@ -352,6 +356,9 @@ public Q_SLOTS:
 
   QString meshStatistics(int item) const;
   bool saveSnapshot(const QString& file);
+  // whether an item is shown (a script must not hold `scene.item(i)`: CGAL Lab's script engine
+  // takes the item and deletes it when the demo quits)
+  bool itemVisible(int item) const { return scene->item(item) && scene->item(item)->visible(); }
 
 private:
   void run_from_dialog(bool closed);
@@ -552,7 +559,7 @@ int Polyhedron_demo_lex_optimal_chains_plugin::run_features(const Feature_reques
   new_item->setName(tr("%1 (lexicographic elements)").arg(pts_item->name()));
   SMesh& fg = *new_item->polyhedron();
   fg = *mesh;
-  auto fg_element = fg.property_map<SMesh::Face_index, std::size_t>("f:lex_element").first;
+  auto fg_element = *Urban_demo::found_property_map(fg.property_map<SMesh::Face_index, std::size_t>("f:lex_element"));
   auto patch = fg.add_property_map<SMesh::Face_index, int>("f:patch_id", 0).first;
   for(SMesh::Face_index f : fg.faces()) patch[f] = int(fg_element[f]);
   fg.remove_property_map(fg_element);
@@ -595,10 +602,10 @@ QString Polyhedron_demo_lex_optimal_chains_plugin::meshStatistics(int item) cons
   j["genus"] = qint64(s.genus);
   j["closed"] = s.closed;
   j["is_closed"] = CGAL::is_closed(*sm_item->face_graph()); // CGAL's own test, as a cross-check
-  const auto patch = sm_item->face_graph()->property_map<SMesh::Face_index, int>("f:patch_id");
-  if(patch.second) { // the elements of a feature-guided reconstruction
+  const auto patch = Urban_demo::found_property_map(sm_item->face_graph()->property_map<SMesh::Face_index, int>("f:patch_id"));
+  if(patch) { // the elements of a feature-guided reconstruction
     std::set<int> elements;
-    for(SMesh::Face_index f : sm_item->face_graph()->faces()) elements.insert(patch.first[f]);
+    for(SMesh::Face_index f : sm_item->face_graph()->faces()) elements.insert((*patch)[f]);
     j["elements"] = qint64(elements.size());
   }
   return QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact));

@@ -39,9 +39,6 @@
 #include "Scene_surface_mesh_item.h"
 #include "SMesh_type.h"
 
-#include <CGAL/Three/Polyhedron_demo_io_plugin_interface.h>
-#include <CGAL/Three/Polyhedron_demo_plugin_helper.h>
-#include <CGAL/Three/Polyhedron_demo_plugin_interface.h>
 #include <CGAL/Three/Three.h>
 #include <CGAL/Three/Viewer_interface.h>
 
@@ -56,6 +53,7 @@
 #include <CGAL/property_map.h>
 
 #include "ui_Polygon_partition_simplification_dialog.h"
+#include "Demo_compatibility.h"
 #include "View_snapshot.h"
 
 #include <chrono>
@@ -207,11 +205,13 @@ SMesh* cells_mesh(const Partition& partition)
 // The number of distinct face colours of a mesh with an "f:color" map (0 without one).
 std::size_t number_of_colors(const SMesh& mesh)
 {
-  const auto map = mesh.property_map<SMesh::Face_index, CGAL::IO::Color>("f:color");
-  if(!map.second) return 0;
+  const auto map = Urban_demo::found_property_map(mesh.property_map<SMesh::Face_index, CGAL::IO::Color>("f:color"));
+  if(!map) return 0;
   std::set<std::array<unsigned char, 3>> colors;
-  for(const SMesh::Face_index f : mesh.faces())
-    colors.insert({map.first[f].red(), map.first[f].green(), map.first[f].blue()});
+  for(const SMesh::Face_index f : mesh.faces()) {
+    const CGAL::IO::Color c = (*map)[f];
+    colors.insert({c.red(), c.green(), c.blue()});
+  }
   return colors.size();
 }
 
@@ -263,18 +263,24 @@ public:
 
 class Polyhedron_demo_polygon_partition_simplification_plugin
   : public QObject,
-    public CGAL::Three::Polyhedron_demo_plugin_helper,
-    public CGAL::Three::Polyhedron_demo_io_plugin_interface
+    public Urban_demo::Plugin_helper,
+    public Urban_demo::Io_plugin_interface
 {
   Q_OBJECT
+#ifdef URBAN_DEMO_CGAL_LAB // see Demo_compatibility.h
+  Q_INTERFACES(CGAL::Three::CGAL_Lab_plugin_interface CGAL::Three::CGAL_Lab_io_plugin_interface)
+  Q_PLUGIN_METADATA(IID "com.geometryfactory.CGALLab.PluginInterface/1.0")
+  Q_PLUGIN_METADATA(IID "com.geometryfactory.CGALLab.IOPluginInterface/1.90")
+#else
   Q_INTERFACES(CGAL::Three::Polyhedron_demo_plugin_interface CGAL::Three::Polyhedron_demo_io_plugin_interface)
   Q_PLUGIN_METADATA(IID "com.geometryfactory.PolyhedronDemo.PluginInterface/1.0")
   Q_PLUGIN_METADATA(IID "com.geometryfactory.PolyhedronDemo.IOPluginInterface/1.90")
+#endif
 
 public:
   using Item_id = CGAL::Three::Scene_interface::Item_id;
 
-  using Polyhedron_demo_io_plugin_interface::init;
+  using Urban_demo::Io_plugin_interface::init;
   void init(QMainWindow* mainWindow, CGAL::Three::Scene_interface* scene_interface, Messages_interface*) override
   {
     scene = scene_interface;
@@ -337,6 +343,9 @@ public Q_SLOTS:
   // the statistics of the last successful kinetic partition or simplification, one JSON line
   // (those of simplify_partition --json for a simplification) with the index of the cells item
   QString lastStatistics() const { return last_statistics; }
+  // whether an item is shown (a script must not hold `scene.item(i)`: CGAL Lab's script engine
+  // takes the item and deletes it when the demo quits)
+  bool itemVisible(int item) const { return scene->item(item) && scene->item(item)->visible(); }
   QString partitionStatistics(int item) const;
   bool saveSnapshot(const QString& file);
 
@@ -644,13 +653,13 @@ int Plugin::lod2(Item_id id, bool interactive)
   QApplication::setOverrideCursor(Qt::WaitCursor);
   try {
     auto np = CGAL::parameters::point_map(points.point_map());
-    const auto plane_index = points.property_map<int>("segment_index");
-    if(points.has_normal_map() && plane_index.second)
-      report = CGAL::lod2_building_reconstruction(points, model, np.normal_map(points.normal_map()).plane_index_map(plane_index.first));
+    const auto plane_index = Urban_demo::found_property_map(points.property_map<int>("segment_index"));
+    if(points.has_normal_map() && plane_index)
+      report = CGAL::lod2_building_reconstruction(points, model, np.normal_map(points.normal_map()).plane_index_map(*plane_index));
     else if(points.has_normal_map())
       report = CGAL::lod2_building_reconstruction(points, model, np.normal_map(points.normal_map()));
-    else if(plane_index.second)
-      report = CGAL::lod2_building_reconstruction(points, model, np.plane_index_map(plane_index.first));
+    else if(plane_index)
+      report = CGAL::lod2_building_reconstruction(points, model, np.plane_index_map(*plane_index));
     else
       report = CGAL::lod2_building_reconstruction(points, model, np);
   } catch(const std::exception& e) {
@@ -658,7 +667,7 @@ int Plugin::lod2(Item_id id, bool interactive)
     return fail(QString::fromStdString(e.what()), interactive);
   }
   QApplication::restoreOverrideCursor();
-  const auto type = model.property_map<SMesh::Face_index, PPS::Building_surface_type>("f:surface_type").first;
+  const auto type = *Urban_demo::found_property_map(model.property_map<SMesh::Face_index, PPS::Building_surface_type>("f:surface_type"));
   auto color = model.add_property_map<SMesh::Face_index, CGAL::IO::Color>("f:color").first;
   for(auto f : model.faces())
     color[f] = type[f] == PPS::Building_surface_type::ROOF   ? CGAL::IO::Color(200, 60, 50)

@@ -14,6 +14,6 @@ run_test(function () {
         throw lex_optimal_chains_plugin.lastError()
     // the menu actions exist (a script would block in their dialog: it calls the slots)
     return { mesh: statistics(item), oni: statistics(oni_item), oni_robust: statistics(oni_robust),
-             points_visible: scene.item(points).visible,
+             points_visible: lex_optimal_chains_plugin.itemVisible(points),
              actions: [actionLexClosedSurface.text, actionLexOpenSurface.text] }
 })

@@ -5,7 +5,9 @@
 // file that a script includes are local to the call.) A test builds a `result` object and calls
 // finish(result): one "RESULT <json>" line for the driver, then the demo quits. Anything
 // thrown is reported as {"failure": ...} rather than left to block the demo. statistics() and
-// snapshot() are those of the Lex_optimal_chains plugin.
+// snapshot() are those of the Lex_optimal_chains plugin. Scripts ask the plugins or the scene by
+// item index (itemVisible(i), scene.setItemVisible(i, b)) and never hold scene.item(i): CGAL
+// Lab's script engine (QJSEngine) would take that item and delete it when the demo quits.
 
 // loads a file with the named IO plugin and returns the index of the new item
 function load(path, loader) {

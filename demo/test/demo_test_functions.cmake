@@ -8,7 +8,8 @@ endif()
 
 # run_demo(<result variable> <script>...): runs the demo with the scripts (after a first
 # argument that sets DATA and OUT in them) and sets the variable to the JSON of the
-# "QtScript: RESULT <json>" line it printed; fails when the demo fails, prints no such line, or
+# "RESULT <json>" line it printed (print() writes "QtScript: <text>" in the Polyhedron demo,
+# "Script message: <text>" in CGAL Lab); fails when the demo fails, prints no such line, or
 # the result is {"failure": ...}. The demo's settings go to a fresh XDG_CONFIG_HOME (no user's
 # settings or plugin blacklist); it is killed after TIMEOUT seconds (a script that fails before
 # main_window.quit() would leave the demo waiting for events).
@@ -25,11 +26,11 @@ function(run_demo result_variable)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "the demo failed (${rc}); stdout:\n${out}\nstderr:\n${err}")
   endif()
-  string(REGEX MATCH "QtScript: RESULT ([^\n]*)" line "${out}")
+  string(REGEX MATCH "(QtScript|Script message): RESULT ([^\n]*)" line "${out}")
   if(NOT line)
     message(FATAL_ERROR "the script printed no RESULT line; stdout:\n${out}\nstderr:\n${err}")
   endif()
-  set(result "${CMAKE_MATCH_1}")
+  set(result "${CMAKE_MATCH_2}")
   message(STATUS "demo: ${result}")
   string(JSON failure ERROR_VARIABLE no_failure GET "${result}" "failure")
   if(NOT no_failure)

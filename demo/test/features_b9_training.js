@@ -10,7 +10,7 @@ run_test(function () {
     var dropped = lex_optimal_chains_plugin.featureReconstruction(points, 0.16, 0, 1)
     if (dropped < 0)
         throw lex_optimal_chains_plugin.lastError()
-    scene.item(dropped).visible = false
+    scene.setItemVisible(dropped, false)
     snapshot("features_b9_training.png")
     var entries = scene.numberOfEntries
     var bad = lex_optimal_chains_plugin.featureReconstruction(points, -1)

@@ -9,7 +9,7 @@ run_test(function () {
     var item_z2 = lex_optimal_chains_plugin.openSurface(points, -1, false)
     if (item_z2 < 0)
         throw lex_optimal_chains_plugin.lastError()
-    scene.item(item_z2).visible = false
+    scene.setItemVisible(item_z2, false)
     snapshot("open_b9_training.png")
     return { mesh: statistics(item), mesh_z2: statistics(item_z2) }
 })

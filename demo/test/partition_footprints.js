@@ -16,8 +16,8 @@ run_test(function () {
              simplification: simplification,
              edges: partition_statistics(simplified),
              cells: partition_statistics(simplification.cells_item),
-             segments_visible: scene.item(segments).visible,
-             kinetic_visible: scene.item(kinetic).visible,
-             simplified_visible: scene.item(simplified).visible,
+             segments_visible: pps.itemVisible(segments),
+             kinetic_visible: pps.itemVisible(kinetic),
+             simplified_visible: pps.itemVisible(simplified),
              actions: [actionKineticPartition.text, actionSimplifyPartition.text] }
 })

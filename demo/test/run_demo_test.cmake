@@ -1,8 +1,8 @@
 # Driver of a headless test of the Lex_optimal_chains plugin (cmake -P):
-#   cmake -DDEMO=<Polyhedron_3> -DLEX_RECONSTRUCT=<lex_reconstruct> -DSCRIPT=<test .js> -DDATA=<points_3 dir>
+#   cmake -DDEMO=<Polyhedron_3 or CGALlab> -DLEX_RECONSTRUCT=<lex_reconstruct> -DSCRIPT=<test .js> -DDATA=<points_3 dir>
 #         -DOUT=<output dir> -DCASE=closed|open|features|errors [-DTIMEOUT=<s>] -P run_demo_test.cmake
-# Runs the real demo under xvfb-run with the QtScript test file, then checks what the script
-# printed ("QtScript: RESULT <json>" lines of the demo's stdout) against lex_reconstruct --json
+# Runs the real demo under xvfb-run with the script test file (JavaScript), then checks what the script
+# printed ("RESULT <json>" lines of the demo's stdout) against lex_reconstruct --json
 # on the same input (closed, open, features) or against the library's reasons (errors), and that the
 # screenshots are real images. Fails (FATAL_ERROR) on any difference.
 cmake_minimum_required(VERSION 3.19) # string(JSON)

@@ -1,6 +1,6 @@
 # Runs the demo on CGAL's building.ply with test/lod2_building.js and compares the LOD2 model of
 # the plugin with that of lod2_reconstruct on the same points.
-#   cmake -DDEMO=<Polyhedron_3> -DLOD2_RECONSTRUCT=<lod2_reconstruct> -DSCRIPT=<.js> -DDATA=<points_3 dir>
+#   cmake -DDEMO=<Polyhedron_3 or CGALlab> -DLOD2_RECONSTRUCT=<lod2_reconstruct> -DSCRIPT=<.js> -DDATA=<points_3 dir>
 #         -DSEGMENTS=<a segments file> -DOUT=<output dir> [-DTIMEOUT=<s>] -P run_lod2_demo_test.cmake
 cmake_minimum_required(VERSION 3.19) # string(JSON)
 foreach(var DEMO LOD2_RECONSTRUCT SCRIPT DATA SEGMENTS OUT)

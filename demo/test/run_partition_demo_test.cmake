@@ -1,8 +1,8 @@
 # Driver of a headless test of the Polygon_partition_simplification plugin (cmake -P):
-#   cmake -DDEMO=<Polyhedron_3> -DSIMPLIFY_PARTITION=<simplify_partition> -DSCRIPT=<test .js>
+#   cmake -DDEMO=<Polyhedron_3 or CGALlab> -DSIMPLIFY_PARTITION=<simplify_partition> -DSCRIPT=<test .js>
 #         -DDATA=<examples/Polygon_partition_simplification/data> -DOUT=<output dir>
 #         -DCASE=footprints|parameters|errors [-DTIMEOUT=<s>] -P run_partition_demo_test.cmake
-# Runs the real demo under xvfb-run with the QtScript test file, then checks what the script
+# Runs the real demo under xvfb-run with the script test file (JavaScript), then checks what the script
 # printed against `simplify_partition ... --json` on the same input and parameters
 # (footprints, parameters), or against the reasons simplify_partition gives for the same bad
 # input (errors), and that the screenshots are PNG files. Fails (FATAL_ERROR) on any difference.
