@@ -56,6 +56,13 @@
 #include <CGAL/Random.h>
 
 #include "ui_Lex_optimal_chains_dialog.h"
+// the interface of the demo built for, included here for moc, which reads the plugin's own
+// includes only (see Demo_compatibility.h)
+#ifdef URBAN_DEMO_CGAL_LAB
+#include <CGAL/Three/CGAL_Lab_plugin_interface.h>
+#else
+#include <CGAL/Three/Polyhedron_demo_plugin_interface.h>
+#endif
 #include "Demo_compatibility.h"
 #include "View_snapshot.h"
 

@@ -53,6 +53,15 @@
 #include <CGAL/property_map.h>
 
 #include "ui_Polygon_partition_simplification_dialog.h"
+// the interfaces of the demo built for, included here for moc, which reads the plugin's own
+// includes only (see Demo_compatibility.h)
+#ifdef URBAN_DEMO_CGAL_LAB
+#include <CGAL/Three/CGAL_Lab_io_plugin_interface.h>
+#include <CGAL/Three/CGAL_Lab_plugin_interface.h>
+#else
+#include <CGAL/Three/Polyhedron_demo_io_plugin_interface.h>
+#include <CGAL/Three/Polyhedron_demo_plugin_interface.h>
+#endif
 #include "Demo_compatibility.h"
 #include "View_snapshot.h"
 

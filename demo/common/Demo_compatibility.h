@@ -6,7 +6,9 @@
 // URBAN_DEMO_CGAL_LAB for CGAL Lab.
 // - The plugin interfaces, renamed from Polyhedron_demo_* to CGAL_Lab_*, with new interface
 //   ids. The ids must be written out where moc reads them, in each plugin's class
-//   (Q_INTERFACES, Q_PLUGIN_METADATA), under the same URBAN_DEMO_CGAL_LAB.
+//   (Q_INTERFACES, Q_PLUGIN_METADATA), under the same URBAN_DEMO_CGAL_LAB, and the interface
+//   headers included by the plugin's source too: the Polyhedron demo's moc is not given the
+//   folder of this header.
 // - The property maps of Surface_mesh and Point_set_3 looked up by name: a pair (map, found)
 //   in CGAL 5.x, an optional map in CGAL 6.x (`found_property_map()`).
 
