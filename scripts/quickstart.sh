@@ -15,9 +15,10 @@
 #                                     with the headless tests of the plugins in CGAL 6.0.1's
 #                                     CGAL Lab (Qt6: Debian 12's Qt 6.4; the Lab's sources
 #                                     from Debian 13's libcgal-demo, unpacked the same way);
-#                                     then each fuzz harness of a reader for 20 s (scripts/fuzz.sh:
-#                                     libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer,
-#                                     Debian's clang)
+#                                     then each fuzz harness of a reader and of the command
+#                                     line for 20 s (scripts/fuzz.sh: libFuzzer,
+#                                     AddressSanitizer and UndefinedBehaviorSanitizer, Debian's
+#                                     clang)
 #   bash scripts/quickstart.sh demo   same set-up, builds CGAL's Polyhedron demo with the plugins
 #                                     of both packages (build-demo/) and starts it on kitten.xyz
 #                                     and the 25 footprints (with a display; without one, says
@@ -90,11 +91,13 @@ else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DURBAN_BUILD_DEMO=ON
   cmake --build build -j"$jobs"
   (cd build && ctest --output-on-failure -j"$jobs")
-  # the second pass: the examples, programs and tests of the packages and the plugins in CGAL
-  # Lab are built (not the MPI programs: the sources of lod2_reconstruct and lex_reconstruct once
-  # more); the tests of the test folders and of the demo run
-  KINDS="Tests Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF -DURBAN_BUILD_DEMO=ON
-  # the readers under libFuzzer, from their seed corpora (fuzz_kinetic_partition, at about 16
-  # scenes a second, is run on its own; ctest replays its corpus)
-  bash scripts/fuzz.sh 20 fuzz_point_file fuzz_polyline_file fuzz_segments_file fuzz_footprints
+  # the second pass: the tests of the test folders and of the demo, built with what they run
+  # (the plugins in CGAL Lab, the command-line programs), not the examples nor the MPI programs
+  # (the sources of lod2_reconstruct and lex_reconstruct once more)
+  KINDS="Tests Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF -DURBAN_BUILD_DEMO=ON \
+    -DURBAN_BUILD_EXAMPLES=OFF
+  # the readers and lex_reconstruct's command line under libFuzzer, from their seed corpora
+  # (fuzz_kinetic_partition, at about 16 scenes a second, is run on its own; ctest replays its
+  # corpus)
+  bash scripts/fuzz.sh 20 fuzz_point_file fuzz_polyline_file fuzz_segments_file fuzz_footprints fuzz_command_line
 fi

@@ -52,8 +52,9 @@ for kind in "${kinds[@]}"; do
 done
 labels="^(${labels%|})$"
 
-# the tests, examples and programs of the packages (and the demo with -DURBAN_BUILD_DEMO=ON):
-# `all` of this configuration, built in parallel (a list of targets would be built one after the other)
+# the tests, examples and programs of the packages (the examples left out with
+# -DURBAN_BUILD_EXAMPLES=OFF; the demo added with -DURBAN_BUILD_DEMO=ON): `all` of this
+# configuration, built in parallel (a list of targets would be built one after the other)
 [ -n "$(cd "$build" && ctest -N -L "$labels" | grep -m1 'compilation')" ] || fail "no compilation test labelled $labels in $build"
 cmake --build "$build" -j"$jobs" 2>&1 | tee "$build/build.log" \
   || fail "the build failed (see $build/build.log)"

@@ -20,16 +20,12 @@
 // Boundary FILE: CGAL's polylines text format, one closed polyline per line:
 // "n x1 y1 z1 ... xn yn zn" with the last point equal to the first.
 // One header per subcommand (closed_command.h, open_command.h, features_command.h,
-// tiles_command.h), what they share in options_and_output.h; this file registers them, parses
-// the command line and handles the errors. lex_reconstruct_mpi is this file compiled with
+// tiles_command.h), what they share in options_and_output.h, their registration and the parse
+// in command_line.h; this file runs the parsed subcommand and handles the errors. lex_reconstruct_mpi is this file compiled with
 // PROCESS_GROUP_WITH_MPI (../Process_group.h).
 // On error: a one-line reason on stderr, exit code 1, and no output file.
 
-#include "closed_command.h"
-#include "features_command.h"
-#include "open_command.h"
-#include "options_and_output.h"
-#include "tiles_command.h"
+#include "command_line.h"
 
 #include <exception>
 #include <string>
@@ -38,31 +34,22 @@ int main(int argc, char** argv)
 {
   using namespace lex_reconstruct;
   Process_group group(argc, argv); // MPI_Init under lex_reconstruct_mpi
-  CLI::App app{"Surface reconstruction as a lexicographic optimal chain (Lex_optimal_chains)"};
-  app.require_subcommand(1);
-  Closed_command closed(app); // each holds the values of its options
-  Open_command open(app);
-  Features_command features(app);
-  Tiles_command tiles(app);
+  Command_line command_line;
   try {
-    app.parse(argc, argv);
-    open.check();
-    if(group.size() > 1 && !tiles.parsed())
-      throw CLI::ValidationError("only the tiles subcommand runs on several MPI ranks (" +
-                                 std::to_string(group.size()) + " here): run the others with one");
+    command_line.parse(argc, argv, group.size());
   } catch(const CLI::CallForHelp& e) {
-    return group.is_root() ? app.exit(e) : 0;
+    return group.is_root() ? command_line.app.exit(e) : 0;
   } catch(const CLI::CallForAllHelp& e) {
-    return group.is_root() ? app.exit(e) : 0;
+    return group.is_root() ? command_line.app.exit(e) : 0;
   } catch(const CLI::ParseError& e) { // one line and exit code 1, as for bad input
     if(group.is_root()) print_error(std::string(e.what()) + " (see --help)");
     return 1;
   }
   try {
-    if(closed.parsed()) return closed.run();
-    if(tiles.parsed()) return tiles.run(group);
-    if(features.parsed()) return features.run();
-    return open.run();
+    if(command_line.closed.parsed()) return command_line.closed.run();
+    if(command_line.tiles.parsed()) return command_line.tiles.run(group);
+    if(command_line.features.parsed()) return command_line.features.run();
+    return command_line.open.run();
   } catch(const Reported_by_another_rank&) {
     return 1;
   } catch(const std::exception& e) {

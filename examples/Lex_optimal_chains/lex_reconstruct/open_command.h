@@ -23,7 +23,8 @@ public:
     auto* a = command_->add_flag("--auto-boundary", auto_boundary_,
                                  "a polygon just outside the xy-footprint, draped at the height of the nearest points (terrain tiles); implies --drop-boundary-triangles");
     b->excludes(a);
-    command_->add_option("--coefficients", coefficients_, "z2 (unoriented) or q (oriented, default)");
+    command_->add_option("--coefficients", coefficients_, "z2 (unoriented) or q (oriented, default)")
+      ->check(CLI::IsMember({"z2", "q"}));
     command_->add_flag("--remove-blocking-points", remove_blocking_,
                        "remove the input points that keep a boundary edge out of the Delaunay triangulation");
     auto* d = command_->add_flag("--drop-boundary-triangles", drop_, "drop the triangles touching boundary vertices that are not input points");
@@ -46,8 +47,6 @@ public:
   int run() const
   {
     Output_file file(output_);
-    if(coefficients_ != "z2" && coefficients_ != "q")
-      throw std::invalid_argument("--coefficients must be z2 or q, not '" + coefficients_ + "'");
     const std::vector<Point> points = LOC::IO::read_point_file<Point>(input_);
     check_memory(points.size(), open_bytes_per_point, max_memory_mb_);
     std::vector<std::vector<Point>> boundary;

@@ -61,8 +61,6 @@ private:
   {
     std::exception_ptr error;
     try {
-      if(t_.coefficients != "z2" && t_.coefficients != "q")
-        throw std::invalid_argument("--coefficients must be z2 or q, not '" + t_.coefficients + "'");
       tile_directory_.reset(new Tile_directory(directory_, group_));
       if(!t_.merged.empty() && group_.is_root()) merged_file_.reset(new Output_file(t_.merged));
     } catch(...) {
@@ -202,11 +200,15 @@ public:
     command_ = app.add_subcommand("tiles", "a terrain-like cloud in tiles whose meshes meet exactly at their seams");
     command_->add_option("INPUT", input_, "points: .xyz, .pwn, .ply, .off or .las")->required();
     command_->add_option("OUTPUT_DIR", directory_, "directory of the tile meshes tile_C_R.ply (created if missing)")->required();
-    command_->add_option("--tile-size", tiles_.tile_size, "largest side of a tile, in the units of the points")->required();
+    command_->add_option("--tile-size", tiles_.tile_size, "largest side of a tile, in the units of the points")
+      ->required()
+      ->check(positive_number());
     command_->add_option("--seam-spacing", tiles_.seam_spacing,
-                         "distance between seam points (default: 3 times the mean spacing of the points)");
+                         "distance between seam points (default: 3 times the mean spacing of the points)")
+      ->check(positive_number());
     command_->add_option("--merged", tiles_.merged, "also write the union of the tiles, welded at the seams (.off, .ply or .obj)");
-    command_->add_option("--coefficients", tiles_.coefficients, "z2 (unoriented) or q (oriented upwards, default)");
+    command_->add_option("--coefficients", tiles_.coefficients, "z2 (unoriented) or q (oriented upwards, default)")
+      ->check(CLI::IsMember({"z2", "q"}));
     command_->add_option("--classes", tiles_.classes, "with a LAS input: the classifications kept, e.g. 2,6 (ground, building)")
       ->delimiter(',')
       ->check(CLI::Range(0, 255));

@@ -1,0 +1,47 @@
+// Copyright (c) 2026  The Lex_optimal_chains authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Fuzz harness of the command-line parsing of lex_reconstruct (command_line.h, what main()
+// parses before anything is read or written): the input is the arguments, one per line (at
+// most 64). A parse ends in exactly one parsed subcommand whose options passed their checks,
+// or in a CLI::ParseError, which main() prints as one line with exit code 1. A crash, another
+// exception, a parse with no or several subcommands, or a sanitizer report is a finding.
+#include "../fuzz_support/fuzz_input_file.h"
+
+#include "../../examples/Lex_optimal_chains/lex_reconstruct/command_line.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <string>
+#include <vector>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  std::vector<std::string> arguments{"lex_reconstruct"};
+  std::string argument;
+  for(std::size_t i = 0; i < size && arguments.size() <= 64; ++i) {
+    if(data[i] == '\n') {
+      arguments.push_back(argument);
+      argument.clear();
+    } else {
+      argument.push_back(char(data[i]));
+    }
+  }
+  if(!argument.empty() && arguments.size() <= 64) arguments.push_back(argument);
+  std::vector<const char*> argv;
+  for(const std::string& a : arguments) argv.push_back(a.c_str());
+
+  lex_reconstruct::Command_line command_line;
+  try {
+    command_line.parse(int(argv.size()), argv.data());
+  } catch(const CLI::ParseError&) {
+    return 0; // a refusal (or --help): the documented outcome of a bad command line
+  } catch(const std::exception& e) {
+    urban_fuzz::finding(std::string("the parse threw something else than CLI::ParseError: ") + e.what());
+  }
+  const int parsed = int(command_line.closed.parsed()) + int(command_line.open.parsed()) +
+                     int(command_line.features.parsed()) + int(command_line.tiles.parsed());
+  if(parsed != 1) urban_fuzz::finding(std::to_string(parsed) + " subcommands parsed, not one");
+  return 0;
+}
