@@ -12,6 +12,8 @@
 #include <CGAL/lex_optimal_homologous_chain.h>
 #include <CGAL/Lex_optimal_chains/triangulation_complex.h>
 #include <CGAL/boost/graph/generators.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 
 #include "test_support.h"
 
@@ -85,6 +87,35 @@ std::map<std::size_t, std::pair<int, double>> elements_by_face(const Mesh& mesh,
   return result;
 }
 
+// The mesh is a valid, vertex-manifold polygon mesh (CGAL's checks: no vertex of CGAL's
+// PMP::duplicate_non_manifold_vertices() left to split), and the report counts the points that
+// have several vertices (where elements meet in several umbrellas); an edge of three faces or
+// more becomes at least two mesh edges (a mesh edge has at most two faces), so each of the
+// report's non-manifold edges has a repeated point pair. Returns the number of split points.
+std::size_t check_manifold_report(const Mesh& mesh, const LOC::Feature_reconstruction_report& r)
+{
+  assert(CGAL::is_valid_polygon_mesh(mesh));
+  Mesh copy = mesh;
+  assert(CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(copy) == 0);
+  std::map<Point, int> vertices_at;
+  for(auto v : mesh.vertices()) ++vertices_at[mesh.point(v)];
+  std::size_t split = 0;
+  for(const auto& [p, n] : vertices_at) split += n > 1;
+  std::map<std::pair<Point, Point>, int> edges_at;
+  for(auto e : mesh.edges()) {
+    Point a = mesh.point(mesh.source(mesh.halfedge(e))), b = mesh.point(mesh.target(mesh.halfedge(e)));
+    if(b < a) std::swap(a, b);
+    ++edges_at[{a, b}];
+  }
+  std::size_t repeated = 0;
+  for(const auto& [ab, n] : edges_at) repeated += n > 1;
+  std::cout << "  " << split << " split points, " << r.non_manifold_edges << " non-manifold edges (" << repeated
+            << " repeated point pairs)" << std::endl;
+  assert(r.non_manifold_vertices == split);
+  assert(r.non_manifold_edges <= repeated); // an edge of three faces or more: at least two mesh edges
+  return split;
+}
+
 void check_cube(const char* what, const Mesh& mesh, const Mesh::Property_map<Mesh::Face_index, std::size_t>& element,
                 const LOC::Feature_reconstruction_report& r, std::size_t expected_elements)
 {
@@ -102,6 +133,7 @@ void check_cube(const char* what, const Mesh& mesh, const Mesh::Property_map<Mes
   assert(r.number_of_cycles == 5);
   assert(by_face.size() == expected_elements && faces.size() == expected_elements);
   assert(mesh.is_valid());
+  check_manifold_report(mesh, r);
 }
 
 void test_cube()
@@ -368,6 +400,7 @@ void test_street()
   };
   std::cout << "  " << points.size() << " points, " << r.number_of_feature_points << " feature points, beta " << r.number_of_cycles
             << ", " << r.mesh_faces << " faces" << std::endl;
+  check_manifold_report(mesh, r);
   const std::size_t ground = main_element("ground");
   assert(ground + 1 == r.element_sizes.size()); // the largest element
   assert(main_element("facade 0") != main_element("facade 1"));
@@ -398,6 +431,7 @@ void test_street()
   const auto borders_np = LOC::parameters::border_features(true, LOC::parameters::feature_threshold(0.2, LOC::parameters::feature_offset(0.2)));
   const LOC::Feature_reconstruction_report rb =
     CGAL::lex_optimal_feature_reconstruction(points, with_borders, LOC::parameters::face_element_map(border_element, borders_np));
+  check_manifold_report(with_borders, rb);
   std::map<std::size_t, std::size_t> shadow_elements;
   const auto [shadows, ground_faces] = shadow_faces(with_borders, &border_element, &shadow_elements);
   std::cout << "  " << rb.number_of_border_points << " border points, beta " << rb.number_of_cycles << "; shadow faces by element:";

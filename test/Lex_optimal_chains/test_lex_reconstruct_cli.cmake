@@ -243,7 +243,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "features fandisk: exit code ${rc}: ${err}")
 endif()
 expect_json_keys("features fandisk" "${json}" points feature_points subcomplex_simplices cycles elements faces
-                 delaunay_s feature_s subcomplex_s chains_s basis_s mesh_s total_s)
+                 non_manifold_vertices non_manifold_edges delaunay_s feature_s subcomplex_s chains_s basis_s mesh_s total_s)
 string(JSON cycles GET "${json}" cycles)
 string(JSON elements GET "${json}" elements)
 string(JSON faces GET "${json}" faces)

@@ -72,6 +72,11 @@ public:
                 << " elements of the critical basis (" << r.number_of_cycles << " cycles around " << r.number_of_feature_points
                 << " feature points)\n";
     }
+    // the mesh is a 2-manifold with several vertices at some points: say where and why
+    if(r.non_manifold_vertices + r.non_manifold_edges > 0)
+      std::cerr << "note: " << r.non_manifold_vertices << " points and " << r.non_manifold_edges
+                << " edges where elements of the basis meet are not manifold; the mesh has a vertex per umbrella "
+                   "and an edge per face there\n";
     return 0;
   }
 
@@ -93,6 +98,8 @@ private:
     j["element_sizes"] = r.element_sizes;
     j["dropped_elements"] = r.number_of_dropped_elements;
     j["faces"] = r.mesh_faces;
+    j["non_manifold_vertices"] = r.non_manifold_vertices;
+    j["non_manifold_edges"] = r.non_manifold_edges;
     j["average_spacing"] = r.average_spacing;
     j["offset"] = r.offset;
     j["relative"] = features_.relative;

@@ -29,6 +29,13 @@ struct Feature_reconstruction_report
   std::size_t number_of_dropped_elements = 0; ///< largest elements left out of the mesh
   std::size_t mesh_vertices = 0;            ///< vertices of the mesh
   std::size_t mesh_faces = 0;               ///< faces of the mesh
+  /// points where elements of the basis meet in several umbrellas (fans of faces joined by
+  /// edges), each split into one mesh vertex per umbrella: the mesh is then a 2-manifold with
+  /// boundary, with several vertices at these points
+  std::size_t non_manifold_vertices = 0;
+  /// edges of three faces or more (three elements or more meeting along a feature), split into
+  /// one mesh edge per face
+  std::size_t non_manifold_edges = 0;
   double average_spacing = 0;               ///< mean distance of a point to its 6 nearest neighbours
   double offset = 0;                        ///< the offset \f$\epsilon\f$ used
   double delaunay_seconds = 0;              ///< the triangulation

@@ -102,17 +102,34 @@ std::vector<Point> feature_set(const std::vector<Point>& pts, const Feature_sett
   return features;
 }
 
+// The number of points that have several vertices in `mesh` (one per umbrella).
+template <class PolygonMesh>
+std::size_t number_of_split_points(const PolygonMesh& mesh)
+{
+  const auto vpm = get(vertex_point, mesh);
+  std::vector<typename boost::property_traits<decltype(vpm)>::value_type> corners;
+  for(auto v : vertices(mesh)) corners.push_back(get(vpm, v));
+  std::sort(corners.begin(), corners.end());
+  std::size_t split = 0;
+  for(std::size_t i = 1; i < corners.size(); ++i)
+    if(corners[i] == corners[i - 1] && (i == 1 || corners[i - 1] != corners[i - 2])) ++split;
+  return split;
+}
+
 // Replaces the elements of `mesh` (keeping its property maps: the element map may be one) by
 // the triangle soup `soup` of `points`, oriented by a traversal, and puts in `element_map` the
-// label of each face, `label` giving it by the sorted points of the face.
+// label of each face, `label` giving it by the sorted points of the face. The points and edges
+// where the elements do not meet as a 2-manifold are split and counted in `report`.
 template <class Point, class PolygonMesh, class ElementMapPointer>
 void mesh_with_elements(const std::vector<Point>& points, std::vector<std::array<std::uint32_t, 3>>& soup,
                         const std::map<std::array<Point, 3>, std::size_t>& label, PolygonMesh& mesh,
-                        ElementMapPointer element_map) // a pointer, or nullptr
+                        ElementMapPointer element_map, // a pointer, or nullptr
+                        Feature_reconstruction_report& report)
 {
   using Face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   PolygonMesh result;
-  add_chain_soup(points, soup, false, result);
+  report.non_manifold_edges = add_chain_soup(points, soup, false, result).non_manifold_edges;
+  report.non_manifold_vertices = number_of_split_points(result);
   // the descriptors first: a range of a mesh with removed elements skips them at every begin()
   const std::vector<Face> old_faces(faces(mesh).begin(), faces(mesh).end());
   for(Face f : old_faces) remove_face(f, mesh);
@@ -166,9 +183,9 @@ void mesh_of_basis(const std::vector<Point>& pts, const Ranked_chains<Point>& ra
   }
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::face_element_map_t>::value) {
     const auto element_map = parameters::get_parameter(np, internal_np::face_element_map);
-    mesh_with_elements(pts, soup, label, mesh, &element_map);
+    mesh_with_elements(pts, soup, label, mesh, &element_map, report);
   } else {
-    mesh_with_elements(pts, soup, label, mesh, nullptr);
+    mesh_with_elements(pts, soup, label, mesh, nullptr, report);
   }
   report.mesh_vertices = std::size_t(std::distance(vertices(mesh).begin(), vertices(mesh).end()));
   report.mesh_faces = std::size_t(std::distance(faces(mesh).begin(), faces(mesh).end()));
