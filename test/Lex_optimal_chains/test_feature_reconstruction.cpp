@@ -91,8 +91,8 @@ std::map<std::size_t, std::pair<int, double>> elements_by_face(const Mesh& mesh,
 // PMP::duplicate_non_manifold_vertices() left to split), and the report counts the points that
 // have several vertices (where elements meet in several umbrellas); an edge of three faces or
 // more becomes at least two mesh edges (a mesh edge has at most two faces), so each of the
-// report's non-manifold edges has a repeated point pair. Returns the number of split points.
-std::size_t check_manifold_report(const Mesh& mesh, const LOC::Feature_reconstruction_report& r)
+// report's non-manifold edges has a repeated point pair.
+void check_manifold_report(const Mesh& mesh, const LOC::Feature_reconstruction_report& r)
 {
   assert(CGAL::is_valid_polygon_mesh(mesh));
   Mesh copy = mesh;
@@ -113,7 +113,6 @@ std::size_t check_manifold_report(const Mesh& mesh, const LOC::Feature_reconstru
             << " repeated point pairs)" << std::endl;
   assert(r.non_manifold_vertices == split);
   assert(r.non_manifold_edges <= repeated); // an edge of three faces or more: at least two mesh edges
-  return split;
 }
 
 void check_cube(const char* what, const Mesh& mesh, const Mesh::Property_map<Mesh::Face_index, std::size_t>& element,
