@@ -27,6 +27,7 @@
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/Lex_optimal_chains/footprint_boundary.h>
 #include <CGAL/Lex_optimal_chains/internal/Closed_surface_mesh_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Pinched_umbrella_trim.h>
 #include <CGAL/Lex_optimal_chains/internal/Umbrellas.h>
 
 #include <algorithm>
@@ -383,14 +384,80 @@ void check_open_disk(const std::vector<Point>& pts, const std::string& name)
   assert(as_off(a) == as_off(b));
 }
 
+// ---- the fans that the drop of boundary triangles leaves pinched --------------------------------
+// Soups by hand: the umbrella kept is in the largest part, then the largest, then the one with
+// the smallest triangle; several pinches go in one round; an edge of three triangles is not a
+// pinch.
+void test_trim_of_pinched_umbrellas()
+{
+  using Soup = std::vector<std::array<std::uint32_t, 3>>;
+  // a fan of 3 triangles around vertex 0 (on 1..4) and one triangle (0, 5, 6) pinched at 0
+  Soup soup{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 5, 6}};
+  assert(LOC::internal::trim_pinched_umbrellas(7, soup) == 1);
+  assert((soup == Soup{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
+  // two single triangles at 0: the one with the smallest triangle stays
+  soup = Soup{{0, 3, 4}, {0, 1, 2}};
+  assert(LOC::internal::trim_pinched_umbrellas(5, soup) == 1 && (soup == Soup{{0, 3, 4}}));
+  // the larger part wins over the larger umbrella: at 0, an umbrella of 2 triangles whose part
+  // has 2, and one of 1 triangle (0, 5, 6) whose part goes on through edge (5, 6) to 5 more
+  soup = Soup{{0, 1, 2}, {0, 2, 3}, {0, 5, 6}, {5, 7, 6}, {5, 8, 7}, {5, 9, 8}, {5, 10, 9}, {5, 11, 10}};
+  assert(LOC::internal::trim_pinched_umbrellas(12, soup) == 2);
+  assert(soup.size() == 6 && soup[0] == (std::array<std::uint32_t, 3>{0, 5, 6}));
+  // several pinches in one round: at 0, the fan on 1..4 (part of 3 triangles, 3 at 0) and the
+  // fan (0, 5, 6), (0, 6, 7) (part of 3 with (6, 8, 7), 2 at 0): the latter goes, and (6, 8, 7)
+  // stays alone; at 4, (0, 3, 4) (part of 3) goes for the fan of 4 triangles on 9..13
+  soup = Soup{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 5, 6}, {0, 6, 7}, {6, 8, 7}, {4, 9, 10}, {4, 10, 11}, {4, 11, 12}, {4, 12, 13}};
+  assert(LOC::internal::trim_pinched_umbrellas(14, soup) == 3);
+  assert((soup == Soup{{0, 1, 2}, {0, 2, 3}, {6, 8, 7}, {4, 9, 10}, {4, 10, 11}, {4, 11, 12}, {4, 12, 13}}));
+  assert(LOC::internal::vertices_with_several_umbrellas(14, std::uint32_t(soup.size()),
+                                                        [&](std::uint32_t c) { return soup[c / 3][c % 3]; })
+           .empty());
+  // a cascade: at 0, the fan on 1, 2, 3, 4, 12, 13, 14 stays and (5, 6, 0), (5, 0, 10) go; that
+  // pinches 5, where their neighbours (5, 7, 8), (5, 8, 6) and (5, 10, 11) met through them: the
+  // next round drops (5, 10, 11), the smaller part
+  soup = Soup{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 12}, {0, 12, 13}, {0, 13, 14},
+              {0, 5, 6}, {0, 10, 5}, {5, 7, 8}, {5, 8, 6}, {5, 10, 11}};
+  assert(LOC::internal::trim_pinched_umbrellas(15, soup) == 3);
+  assert((soup == Soup{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 12}, {0, 12, 13}, {0, 13, 14}, {5, 7, 8}, {5, 8, 6}}));
+  // three triangles on the edge (0, 1): one umbrella at 0 and 1, nothing to trim
+  soup = Soup{{0, 1, 2}, {0, 1, 3}, {0, 1, 4}};
+  assert(LOC::internal::trim_pinched_umbrellas(5, soup) == 0 && soup.size() == 3);
+}
+
+// CGAL's poste_france.xyz under its footprint, the skirt dropped: the drop pinches the
+// surface at three points; the trim makes it a 2-manifold; with keep_non_manifold, the pinches
+// are split instead (the test is about something).
+void check_trimmed_drop(const std::vector<Point>& pts, const std::string& name)
+{
+  const std::vector<std::vector<Point>> boundary{LOC::footprint_boundary(pts)};
+  Mesh kept, trimmed, shuffled_trimmed;
+  const auto rk = CGAL::lex_optimal_open_surface_reconstruction(
+    pts, boundary, kept, LOC::parameters::drop_boundary_triangles(true, LOC::parameters::keep_non_manifold(true)));
+  const auto r = CGAL::lex_optimal_open_surface_reconstruction(pts, boundary, trimmed, LOC::parameters::drop_boundary_triangles(true));
+  std::cout << name << ", skirt dropped: " << rk.non_manifold_vertices << " vertex copies when kept; " << r.trimmed_triangles
+            << " triangles trimmed, " << r.non_manifold_vertices << " copies\n";
+  assert(rk.non_manifold_vertices > 0 && rk.trimmed_triangles == 0);
+  assert(r.trimmed_triangles > 0 && r.non_manifold_vertices == 0 && r.non_manifold_edges == 0);
+  check_manifold_mesh(trimmed);
+  std::vector<Point> shuffled = pts;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(3));
+  CGAL::lex_optimal_open_surface_reconstruction(shuffled, boundary, shuffled_trimmed, LOC::parameters::drop_boundary_triangles(true));
+  assert(as_off(trimmed) == as_off(shuffled_trimmed));
+}
+
 void test_open_surfaces(const std::string& data)
 {
+  test_trim_of_pinched_umbrellas();
   check_open_disk(terrain_with_buildings(40000), "terrain with two buildings");
   if(data.empty()) return;
   std::vector<Point> b9;
   const bool read = CGAL::IO::read_points(data + "/points_3/b9_training.ply", std::back_inserter(b9));
   assert(read && !b9.empty());
   check_open_disk(b9, "b9_training.ply");
+  std::vector<Point> poste;
+  const bool read_poste = CGAL::IO::read_points(data + "/points_3/poste_france.xyz", std::back_inserter(poste));
+  assert(read_poste && !poste.empty());
+  check_trimmed_drop(poste, "poste_france.xyz");
 }
 
 // ---- exact ties: points on integer lattices (a rounded sphere, a stepped terrain) -----------------

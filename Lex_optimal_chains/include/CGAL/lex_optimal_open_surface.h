@@ -97,7 +97,7 @@ disjoint, each edge oriented from a vertex to the next
     \cgalParamDefault{`false`}
   \cgalParamNEnd
   \cgalParamNBegin{drop_boundary_triangles}
-    \cgalParamDescription{drops the triangles that touch a boundary vertex that is not an input point (Fig. 4.26 of the thesis: the skirt joining an outer polygon to a terrain)}
+    \cgalParamDescription{drops the triangles that touch a boundary vertex that is not an input point (Fig. 4.26 of the thesis: the skirt joining an outer polygon to a terrain), and then, unless `keep_non_manifold`, the fans of triangles that this drop leaves pinched at an input point, all but one per point}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
   \cgalParamNEnd

@@ -82,7 +82,8 @@ private:
   {
     if(!options_.json) {
       std::cerr << "\nwrote " << output_ << ": " << r.mesh_vertices << " vertices, " << r.mesh_faces << " faces ("
-                << r.dropped_triangles << " boundary triangles dropped, " << r.number_of_removed_points << " points removed)\n";
+                << r.dropped_triangles << " boundary triangles dropped, " << r.trimmed_triangles
+                << " pinched ones trimmed, " << r.number_of_removed_points << " points removed)\n";
       return;
     }
     nlohmann::json j;
@@ -94,6 +95,7 @@ private:
     j["boundary_vertices_added"] = r.number_of_boundary_vertices;
     j["removed_points"] = r.number_of_removed_points;
     j["dropped_triangles"] = r.dropped_triangles;
+    j["trimmed_triangles"] = r.trimmed_triangles;
     j["chain_triangles"] = r.number_of_facets;
     j["multiple_triangles"] = r.number_of_multiple_facets;
     j["triangles"] = r.number_of_triangles;

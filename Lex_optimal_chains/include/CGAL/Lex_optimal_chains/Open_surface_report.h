@@ -42,6 +42,7 @@ struct Open_surface_report
   std::size_t mesh_vertices = 0;                 ///< vertices of the output mesh (reconstruction and `lex_optimal_open_surface_mesh()`)
   std::size_t mesh_faces = 0;                    ///< faces of the output mesh (reconstruction and `lex_optimal_open_surface_mesh()`)
   std::size_t dropped_triangles = 0;             ///< triangles dropped because they touch a boundary-only vertex
+  std::size_t trimmed_triangles = 0;             ///< triangles dropped after them, unless `keep_non_manifold`: the fans that the drop left pinched at an input point (all but one per point: the one in the largest part of the surface)
   std::size_t non_manifold_vertices = 0;         ///< vertex copies added to separate umbrellas: the non-manifold vertices left by the resolution, or all with `keep_non_manifold` (reconstruction and `lex_optimal_open_surface_mesh()`)
   std::size_t non_manifold_edges = 0;            ///< edges of more than two triangles of the output chain, split in the mesh (reconstruction and `lex_optimal_open_surface_mesh()`)
   std::size_t orientation_cuts = 0;              ///< edges cut to orient the mesh: over Z2, where the chain is not orientable (reconstruction and `lex_optimal_open_surface_mesh()`)

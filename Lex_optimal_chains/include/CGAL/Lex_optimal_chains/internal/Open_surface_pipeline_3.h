@@ -12,6 +12,7 @@
 #include <CGAL/Lex_optimal_chains/internal/Chain_soup_mesh.h>
 #include <CGAL/Lex_optimal_chains/internal/Open_surface_repair_3.h>
 #include <CGAL/Lex_optimal_chains/internal/Optimal_chain_3.h>
+#include <CGAL/Lex_optimal_chains/internal/Pinched_umbrella_trim.h>
 #include <CGAL/Lex_optimal_chains/internal/Stopwatch.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -34,7 +35,9 @@ namespace internal {
 
 // The output chain of an open surface as a soup, vertices and triangles sorted (see
 // Chain_soup_builder): the optimal chain of `dt` bounded by `cycle`, its non-manifold vertices
-// resolved unless `keep_non_manifold`, without the triangles that touch a vertex of `dropped`.
+// resolved unless `keep_non_manifold`, without the triangles that touch a vertex of `dropped`
+// (and then, unless `keep_non_manifold`, without the fans that this drop leaves pinched at a
+// point: Pinched_umbrella_trim.h).
 // `release_triangulation()` is called as soon as the triangulation is no longer read (the
 // reconstruction frees its own triangulation there, before the soup is sorted: peak memory).
 template <class Triangulation, class EdgeRange, class NamedParameters, class ReleaseTriangulation>
@@ -74,6 +77,8 @@ void open_surface_soup(const Triangulation& dt, const EdgeRange& cycle,
   builder.take_points();
   release_triangulation();
   builder.finish(soup_points, soup, report.dropped_triangles);
+  if(report.dropped_triangles > 0 && !keep)
+    report.trimmed_triangles = trim_pinched_umbrellas(soup_points.size(), soup);
   if(soup.empty() && report.dropped_triangles > 0)
     throw Input_error(Input_error_code::EMPTY_RESULT,
                       "all " + std::to_string(report.dropped_triangles) +
