@@ -93,9 +93,10 @@ else
   (cd build && ctest --output-on-failure -j"$jobs")
   # the second pass: the tests of the test folders and of the demo, built with what they run
   # (the plugins in CGAL Lab, the command-line programs), not the examples nor the MPI programs
-  # (the sources of lod2_reconstruct and lex_reconstruct once more)
+  # (the sources of lod2_reconstruct and lex_reconstruct once more), nor the data sweep, whose
+  # programs are those of the first pass
   KINDS="Tests Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF -DURBAN_BUILD_DEMO=ON \
-    -DURBAN_BUILD_EXAMPLES=OFF
+    -DURBAN_BUILD_EXAMPLES=OFF -DURBAN_DATA_SWEEP=OFF
   # the readers and lex_reconstruct's command line under libFuzzer, from their seed corpora
   # (fuzz_kinetic_partition, at about 16 scenes a second, is run on its own; ctest replays its
   # corpus)

@@ -1,0 +1,1 @@
+data/tetrahedron.off --closed
