@@ -38,6 +38,7 @@
 #include "GeoJSON_footprints.h"
 #include "Process_group.h"
 #include "Temporary_output_files.h"
+#include "lod2_reconstruct_command_line.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -57,12 +58,9 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point_set = CGAL::Point_set_3<K::Point_3, K::Vector_3>;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using lod2_reconstruct::ends_with;
+using lod2_reconstruct::Options;
 namespace PPS = CGAL::Polygon_partition_simplification;
-
-static bool ends_with(const std::string& s, const std::string& end)
-{
-  return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
-}
 
 static Point_set read_points(const std::string& input)
 {
@@ -181,29 +179,6 @@ static Tile read_tile(const std::string& input)
     ++k;
   }
   return tile;
-}
-
-// the ground and building classes of --classes G[,G...]:B[,B...]
-static std::pair<std::vector<int>, std::vector<int>> parse_classes(const std::string& text)
-{
-  const std::size_t colon = text.find(':');
-  auto list = [&text](const std::string& part) {
-    std::vector<int> values;
-    std::stringstream in(part);
-    std::string item;
-    while(std::getline(in, item, ',')) {
-      std::size_t used = 0;
-      int value = -1;
-      try { value = std::stoi(item, &used); } catch(const std::exception&) { used = 0; }
-      if(used != item.size() || value < 0 || value > 255)
-        throw std::runtime_error("--classes takes ground classes, a colon and building classes (0 to 255), as 2:6 or 2,9:6: " + text);
-      values.push_back(value);
-    }
-    if(values.empty()) throw std::runtime_error("--classes needs at least one ground and one building class, as 2:6: " + text);
-    return values;
-  };
-  if(colon == std::string::npos) throw std::runtime_error("--classes takes ground classes, a colon and building classes, as 2:6: " + text);
-  return {list(text.substr(0, colon)), list(text.substr(colon + 1))};
 }
 
 using Polygon_with_holes = CGAL::Polygon_with_holes_2<K>;
@@ -465,14 +440,6 @@ static nlohmann::json reconstruct_scene(const std::string& input, const std::str
   return scene_statistics(report);
 }
 
-struct Options
-{
-  std::string input, output, planes = "detect", classes = "2:6", footprints_file;
-  double lambda1 = 0.5, lambda2 = 5, epsilon = 0;
-  int threads = 0;
-  bool json = false, walls_at_eaves = false;
-};
-
 // The command on every rank: the checks, the input, and the model of a scene (on one rank) or
 // this rank's buildings of a tile, which the first rank then gathers and writes. Returns the
 // statistics on the first rank.
@@ -483,11 +450,6 @@ static nlohmann::json run(const Options& o, const Process_group& group)
   City_share share;
   bool city = false;
   try {
-    if(!(ends_with(o.output, ".off") || ends_with(o.output, ".ply") || ends_with(o.output, ".obj") ||
-         ends_with(o.output, ".city.json") || ends_with(o.output, ".city.jsonl")))
-      throw std::runtime_error("OUTPUT must end in .off, .ply, .obj, .city.json or .city.jsonl: " + o.output);
-    if(o.threads < 0) throw std::runtime_error("--threads must be >= 0");
-    const auto [ground_classes, building_classes] = parse_classes(o.classes);
     const std::vector<Polygon_with_holes> footprints = o.footprints_file.empty() ? std::vector<Polygon_with_holes>()
                                                                                  : read_footprints(o.footprints_file);
     const auto base = PPS::parameters::concurrency_weight(
@@ -501,7 +463,7 @@ static nlohmann::json run(const Options& o, const Process_group& group)
                                std::to_string(group.size()) + " here): run a scene on one");
     auto model = [&](const auto& np) {
       const auto city_np = PPS::parameters::ground_classes(
-        ground_classes, PPS::parameters::building_classes(building_classes, PPS::parameters::number_of_threads(o.threads, np)));
+        o.ground_classes, PPS::parameters::building_classes(o.building_classes, PPS::parameters::number_of_threads(o.threads, np)));
       if(city) share = model_share(tile, footprints, group, city_np.point_map(Tile_position_map()));
       else j = reconstruct_scene(o.input, o.planes, o.output, np);
     };
@@ -519,25 +481,16 @@ static nlohmann::json run(const Options& o, const Process_group& group)
 int main(int argc, char** argv)
 {
   Process_group group(argc, argv); // MPI_Init under lod2_reconstruct_mpi
-  CLI::App app{"LOD2 building models from a point cloud (planes, segments, kinetic partition, simplification, lift)"};
-  Options o;
-  app.add_option("INPUT", o.input, "points: .ply, .xyz, .pwn, .off or .las")->required();
-  app.add_option("OUTPUT", o.output, "model: .off, .ply, .obj, .city.json (CityJSON 1.1) or .city.jsonl (CityJSON Text Sequences, tiles)")->required();
-  app.add_option("--planes", o.planes, "detect (region growing, default) or the name of an int point property giving the plane of each point (scenes only)");
-  app.add_option("--classes", o.classes, "ground and building classes of a classified input, as GROUND[,...]:BUILDING[,...] (default 2:6)");
-  app.add_option("--footprints", o.footprints_file, "GeoJSON polygons: one building per footprint, made of the building points inside it");
-  app.add_option("--threads", o.threads, "threads modelling the buildings of a tile, 0 for all cores (default; per rank under MPI)");
-  app.add_option("--lambda1", o.lambda1, "weight of the concurrency term of the simplification, default 0.5");
-  app.add_option("--lambda2", o.lambda2, "weight of the orthogonality term, default 5");
-  app.add_option("--epsilon", o.epsilon, "longest edge to collapse in the simplification, input units (default: 1% of the half-diagonal)");
-  app.add_flag("--walls-at-eaves", o.walls_at_eaves,
-               "put the walls at the edges of the roofs, as seen from above (default: on the facades, where facade points show them)");
-  app.add_flag("--json", o.json, "print one line of JSON statistics");
+  lod2_reconstruct::Command_line command_line;
   try {
-    app.parse(argc, argv);
-  } catch(const CLI::ParseError& e) { // --help included; printed once
-    return group.is_root() ? app.exit(e) : e.get_exit_code();
+    command_line.parse(argc, argv);
+  } catch(const CLI::CallForHelp& e) { // printed once
+    return group.is_root() ? command_line.app.exit(e) : 0;
+  } catch(const CLI::ParseError& e) { // one line and exit code 1, as for bad input
+    if(group.is_root()) std::cerr << "lod2_reconstruct: error: " << e.what() << " (see --help)" << std::endl;
+    return 1;
   }
+  const lod2_reconstruct::Options& o = command_line.options;
   try {
     const nlohmann::json j = run(o, group);
     if(!group.is_root()) return 0;

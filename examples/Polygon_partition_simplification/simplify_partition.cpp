@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "Temporary_output_files.h"
+#include "simplify_partition_command_line.h"
 
 #include <chrono>
 #include <cstdio>
@@ -33,14 +34,6 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 namespace PPS = CGAL::Polygon_partition_simplification;
 using Partition = PPS::Line_partition_2<K>;
-
-static std::string extension(const std::string& file)
-{
-  const auto dot = file.rfind('.');
-  std::string e = dot == std::string::npos ? "" : file.substr(dot + 1);
-  for(char& ch : e) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  return e;
-}
 
 // the edges of both partitions side by side, before on the left
 static void write_svg(std::ostream& out, const Partition& before, const Partition& after)
@@ -66,35 +59,23 @@ static void write_svg(std::ostream& out, const Partition& before, const Partitio
 
 int main(int argc, char** argv)
 {
-  CLI::App app{"Kinetic partition of 2D segments and its simplification in line space"};
-  std::string input, output, svg;
-  double lambda1 = 0.5, lambda2 = 5, alpha_max = 5;
-  double epsilon = 0;
-  bool json = false, remove_far_points = false;
-  app.add_option("SEGMENTS", input, "segments, one per line: x0 y0 x1 y1")->required();
-  app.add_option("OUTPUT", output, "cells of the simplified partition (.geojson, .json or .wkt)")->required();
-  app.add_option("--lambda1", lambda1, "weight of the concurrency term (edge collapses), default 0.5");
-  app.add_option("--lambda2", lambda2, "weight of the orthogonality term, default 5");
-  app.add_option("--epsilon", epsilon, "longest edge to collapse, input units, also the unit of length of the energy (default: 1% of the half-diagonal)");
-  app.add_option("--alpha-max", alpha_max, "angle to 90 degrees under which lines are pulled to orthogonality");
-  app.add_option("--svg", svg, "draws the partition before and after, side by side");
-  app.add_flag("--remove-far-points", remove_far_points,
-               "case (b2) of the thesis: remove the points sent outside the partition with their edges");
-  app.add_flag("--json", json, "prints one JSON line of statistics");
+  simplify_partition::Command_line command_line;
   try {
-    app.parse(argc, argv);
+    command_line.parse(argc, argv);
   } catch(const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return command_line.app.exit(e);
   } catch(const CLI::ParseError& e) { // one line and exit code 1, as for bad input
     std::cerr << "simplify_partition: error: " << e.what() << " (see --help)" << std::endl;
     return 1;
   }
+  const simplify_partition::Options& o = command_line.options;
+  const std::string &input = o.input, &output = o.output, &svg = o.svg;
+  const double lambda1 = o.lambda1, lambda2 = o.lambda2, alpha_max = o.alpha_max, epsilon = o.epsilon;
+  const bool json = o.json, remove_far_points = o.remove_far_points;
 
-  const std::string format = extension(output);
+  const std::string format = simplify_partition::extension(output);
   const std::string temporary = output + ".partial", svg_temporary = svg + ".partial";
   try {
-    if(format != "geojson" && format != "json" && format != "wkt")
-      throw std::runtime_error("output '" + output + "' must end in .geojson, .json or .wkt");
     // both files are created (empty, under their temporary names) before the work, and removed
     // if a signal interrupts it
     const urban_programs::Temporary_output_file interrupted(temporary);
@@ -114,7 +95,7 @@ int main(int argc, char** argv)
       partition, PPS::parameters::remove_far_points(remove_far_points,
                  PPS::parameters::concurrency_weight(lambda1,
                  PPS::parameters::orthogonality_weight(lambda2,
-                 PPS::parameters::collapse_distance(app.count("--epsilon") > 0 ? epsilon : 0.01 * scale,
+                 PPS::parameters::collapse_distance(epsilon > 0 ? epsilon : 0.01 * scale,
                  PPS::parameters::maximum_angle(alpha_max))))));
 
     std::vector<Partition::Polygon_with_holes_2> cells;

@@ -18,19 +18,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  std::vector<std::string> arguments{"lex_reconstruct"};
-  std::string argument;
-  for(std::size_t i = 0; i < size && arguments.size() <= 64; ++i) {
-    if(data[i] == '\n') {
-      arguments.push_back(argument);
-      argument.clear();
-    } else {
-      argument.push_back(char(data[i]));
-    }
-  }
-  if(!argument.empty() && arguments.size() <= 64) arguments.push_back(argument);
-  std::vector<const char*> argv;
-  for(const std::string& a : arguments) argv.push_back(a.c_str());
+  std::vector<std::string> storage;
+  const std::vector<const char*> argv = urban_fuzz::arguments(data, size, "lex_reconstruct", storage);
 
   lex_reconstruct::Command_line command_line;
   try {

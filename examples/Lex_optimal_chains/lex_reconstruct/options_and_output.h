@@ -12,6 +12,7 @@
 #include <CGAL/Lex_optimal_chains/IO/input_files.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include "../Command_line_checks.h"
 #include "../Temporary_output_files.h"
 
 #include <CLI/CLI.hpp>
@@ -73,16 +74,7 @@ inline std::string lower_extension(const std::string& path)
   return e;
 }
 
-// the check of an option that takes a positive finite number
-inline CLI::Validator positive_number()
-{
-  return CLI::Validator(
-    [](std::string& text) {
-      const double v = std::strtod(text.c_str(), nullptr);
-      return std::isfinite(v) && v > 0 ? std::string() : "must be a positive finite number, not " + text;
-    },
-    "POSITIVE");
-}
+using urban_programs::positive_number;
 
 // components, border loops and genus of the written mesh (sum over the components of
 // (2 - chi - border loops) / 2)
