@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/lex_optimal_open_surface.h>
 #include <CGAL/lex_optimal_tiled_surface.h>
+#include <CGAL/Lex_optimal_chains/internal/Gabriel_seams_3.h>
 
 #include "test_support.h"
 
@@ -280,6 +281,137 @@ void test_synthetic_terrain()
   for(std::size_t t = 0; t < tiles.size(); ++t) assert(!n.tiles[t].reconstructed && none[t].is_empty());
 }
 
+// Gabriel_seams_3 on seams made to fail: a vertical seam along x = 0 that climbs a wall
+// (points a millimetre apart in xy, a metre apart in z) and zigzags in the noise, crossed by a
+// horizontal one at its node. Afterwards no seam point lies in the closed diametral ball of a
+// seam edge (brute force, exact), every original point is kept in order with its node, and the
+// added points lie on the original edges (in the xy-plane, exactly between their ends).
+void test_gabriel_seams()
+{
+  using Line = LOC::internal::Seam_polyline<Point>;
+  Line vertical, horizontal;
+  vertical.points = {Point(0, -10, 0), Point(0.01, 0, 0), Point(0.011, 0.001, 1), Point(-0.01, 0.13, 0.02),
+                     Point(0, 0.26, 0.9), Point(0.02, 0.39, 0.1), Point(0, 0.52, 0.1), Point(0, 10, 0)};
+  vertical.nodes = {0, 6, 7};
+  horizontal.points = {Point(-10, 0.52, 0), Point(-0.13, 0.5, 0.5), Point(0, 0.52, 0.1), Point(0.13, 0.53, 0.12),
+                       Point(10, 0.52, 0)};
+  horizontal.nodes = {0, 2, 4};
+  const Line vertical_before = vertical, horizontal_before = horizontal;
+  auto in_some_ball = [](const std::vector<const Line*>& lines) {
+    std::size_t count = 0;
+    for(const Line* l : lines)
+      for(std::size_t k = 1; k + 2 < l->points.size(); ++k)
+        for(const Line* m : lines)
+          for(const Point& t : m->points)
+            if(t != l->points[k] && t != l->points[k + 1] &&
+               Kernel::Side_of_bounded_sphere_3()(l->points[k], l->points[k + 1], t) != CGAL::ON_UNBOUNDED_SIDE)
+              ++count;
+    return count;
+  };
+  const std::size_t before = in_some_ball({&vertical, &horizontal});
+  const std::size_t added =
+    LOC::internal::Gabriel_seams_3<Point>({&vertical, &horizontal}, 0.13).split_until_gabriel();
+  std::cout << "Gabriel seams: " << before << " seam points in diametral balls, " << added << " points added, "
+            << in_some_ball({&vertical, &horizontal}) << " left" << std::endl;
+  assert(before > 0 && added > 0 && in_some_ball({&vertical, &horizontal}) == 0);
+  for(const auto& [after, original] : {std::make_pair(&vertical, &vertical_before), std::make_pair(&horizontal, &horizontal_before)}) {
+    std::size_t k = 0;
+    for(std::size_t i = 0; i < original->points.size(); ++i) {
+      while(after->points[k] != original->points[i]) { // an added point, on the edge i - 1, i
+        const Point &a = original->points[i - 1], &b = original->points[i], &m = after->points[k];
+        assert(CGAL::collinear(a, b, m) || CGAL::squared_distance(Kernel::Segment_3(a, b), m) < 1e-20);
+        auto between = [](double u, double v, double w) { return (std::min)(u, v) <= w && w <= (std::max)(u, v); };
+        assert(between(a.x(), b.x(), m.x()) && between(a.y(), b.y(), m.y()));
+        ++k;
+      }
+      ++k;
+    }
+    assert(k == after->points.size() && after->nodes.size() == original->nodes.size());
+    for(std::size_t n = 0; n < original->nodes.size(); ++n)
+      assert(after->points[after->nodes[n]] == original->points[original->nodes[n]]);
+  }
+}
+
+// A dense scan of a block of side `side`: `density` points per square metre from above on
+// gentle ground and on two flat-roofed buildings 4 and 7 high, and as many per square metre of
+// their walls (a mobile or oblique scan sees them), every height with uniform noise in
+// [-noise, noise]. Where a seam crosses a wall, its points are millimetres apart in xy and
+// centimetres to metres apart in z.
+std::vector<Point> dense_block_with_walls(double side, double density, double noise, unsigned seed)
+{
+  CGAL::Random rng(seed);
+  struct Box { double x0, y0, x1, y1, h; };
+  const std::vector<Box> boxes{{0.2 * side, 0.15 * side, 0.55 * side, 0.5 * side, 4}, {0.6 * side, 0.55 * side, 0.9 * side, 0.85 * side, 7}};
+  auto ground = [](double x, double y) { return 0.3 * std::sin(0.4 * x) * std::cos(0.3 * y) + 0.01 * x; };
+  std::vector<Point> points;
+  const std::size_t from_above = std::size_t(density * side * side);
+  for(std::size_t i = 0; i < from_above; ++i) {
+    const double x = rng.get_double(0, side), y = rng.get_double(0, side);
+    double z = ground(x, y);
+    for(const Box& b : boxes)
+      if(x > b.x0 && x < b.x1 && y > b.y0 && y < b.y1) z = ground(b.x0, b.y0) + b.h;
+    points.emplace_back(x, y, z + rng.get_double(-noise, noise));
+  }
+  for(const Box& b : boxes) { // the four walls, from the ground to the roof
+    const double base = ground(b.x0, b.y0);
+    const std::size_t per_wall = std::size_t(density * (b.x1 - b.x0) * b.h);
+    for(int wall = 0; wall < 4; ++wall)
+      for(std::size_t i = 0; i < per_wall; ++i) {
+        const double t = rng.get_double(0, 1), z = base + rng.get_double(0, b.h) + rng.get_double(-noise, noise);
+        const double x = wall < 2 ? b.x0 + t * (b.x1 - b.x0) : (wall == 2 ? b.x0 : b.x1);
+        const double y = wall < 2 ? (wall == 0 ? b.y0 : b.y1) : b.y0 + t * (b.y1 - b.y0);
+        points.emplace_back(x, y, z);
+      }
+  }
+  return points;
+}
+
+// The untiled surface of `points` (side `side`, from 0) in the frame of the tiles: the open
+// surface bounded by a rectangle just outside the cloud, its skirt dropped; whether it is one
+// disk (connected, one boundary loop, Euler characteristic 1, no split vertex).
+bool untiled_surface_is_disk(const std::vector<Point>& points, double side, double margin)
+{
+  const double zf = -5;
+  const std::vector<Point> frame{Point(-margin, -margin, zf), Point(side + margin, -margin, zf),
+                                 Point(side + margin, side + margin, zf), Point(-margin, side + margin, zf),
+                                 Point(-margin, -margin, zf)};
+  Mesh whole;
+  const auto r = CGAL::lex_optimal_open_surface_reconstruction(
+    points, std::vector<std::vector<Point>>{frame}, whole,
+    LOC::parameters::remove_blocking_points(true, LOC::parameters::drop_boundary_triangles(true)));
+  const Topology top = topology(whole);
+  const long euler = long(whole.number_of_vertices()) - long(whole.number_of_edges()) + long(whole.number_of_faces());
+  std::cout << "  untiled: " << top.components << " component(s), " << top.border_cycles << " boundary loop(s), Euler characteristic "
+            << euler << ", " << r.non_manifold_vertices << " split vertices" << std::endl;
+  return top.components == 1 && top.border_cycles == 1 && euler == 1 && r.non_manifold_vertices == 0;
+}
+
+// Dense scans with walls, at several densities and noise levels up to those of a 500 points per
+// square metre survey: every seam edge is imposed (no tile stops), and the union of the tiles is
+// one disk without split vertices whenever the untiled surface of the same points is.
+void test_dense_seams()
+{
+  for(const double density : {250., 500.})
+    for(const double noise : {0.005, 0.05, 0.15}) {
+      const std::vector<Point> points = dense_block_with_walls(10, density, noise, unsigned(density + 1000 * noise));
+      std::cout << "dense block with walls, " << points.size() << " points (" << density << " a square metre, noise "
+                << noise << "), tiles of 3.5" << std::endl;
+      std::vector<Mesh> tiles;
+      const LOC::Tiled_surface_report r =
+        CGAL::lex_optimal_tiled_surface_reconstruction(points, 3.5, tiles, LOC::parameters::number_of_threads(2));
+      Mesh merged;
+      const LOC::Tile_merge_report m = LOC::merge_tile_meshes(tiles, merged);
+      const Topology top = topology(merged);
+      const long euler = long(merged.number_of_vertices()) - long(merged.number_of_edges()) + long(merged.number_of_faces());
+      std::cout << "  " << r.number_of_seam_points << " seam points; union: " << top.components << " component(s), "
+                << top.border_cycles << " boundary loop(s), Euler characteristic " << euler << ", "
+                << m.non_manifold_vertices << " split vertices" << std::endl;
+      assert(merged.is_valid());
+      const bool union_is_disk = top.components == 1 && top.border_cycles == 1 && euler == 1 && m.non_manifold_vertices == 0;
+      if(!union_is_disk) assert(!untiled_surface_is_disk(points, 10, std::max(r.seam_spacing, 0.1)));
+    }
+}
+
 // A flat cloud (all heights 0, a parking lot): the frame is below it, so the tiles are not
 // coplanar with their cycles.
 void test_flat_cloud()
@@ -325,11 +457,21 @@ void test_bad_input()
   expect_error(Code::INVALID_PARAMETER, [&] {
     CGAL::lex_optimal_tiled_surface_reconstruction(points, 5., tiles, LOC::parameters::seam_spacing(2.));
   });
-  // a hole around the corner of the four tiles: no point to start the seams from
+  // a hole around the corner of the four tiles: the seams meet at a point of their own there,
+  // and the tiles bridge the hole as the untiled surface does
   std::vector<Point> holed;
   for(const Point& p : points)
     if(std::abs(p.x() - 5) > 1 || std::abs(p.y() - 5) > 1) holed.push_back(p);
-  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(holed, 5., tiles); });
+  {
+    std::vector<Mesh> holed_tiles;
+    Mesh holed_merged;
+    check_seams(holed, 5., 1, holed_tiles, holed_merged);
+  }
+  // no point at all near the two border lines through a corner: nothing to run the seams through
+  std::vector<Point> split_cloud;
+  for(const Point& p : points)
+    if(std::abs(p.x() - 5) > 1 && std::abs(p.y() - 5) > 1) split_cloud.push_back(p);
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction(split_cloud, 5., tiles); });
   // a tile filter that does not return one value per tile
   auto one_more = [](const std::vector<std::size_t>& p) { return std::vector<bool>(p.size() + 1, true); };
   expect_error(Code::INVALID_PARAMETER, [&] {
@@ -349,7 +491,7 @@ void test_bad_input()
   const std::string d = dir.string();
   expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 0., d, tiles); });
   expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 10., d, tiles); });
-  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(holed), 5., d, tiles); });
+  expect_error(Code::INVALID_PARAMETER, [&] { CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(split_cloud), 5., d, tiles); });
   expect_error(Code::INVALID_PARAMETER, [&] {
     CGAL::lex_optimal_tiled_surface_reconstruction_out_of_core(from(points), 5., d, tiles, LOC::parameters::tile_filter(one_more));
   });
@@ -390,6 +532,8 @@ int main(int argc, char** argv)
   test_bad_input();
   test_synthetic_terrain();
   test_flat_cloud();
+  test_gabriel_seams();
+  test_dense_seams();
   test_aerial_scan(argc > 1 ? argv[1] : CGAL::data_file_path(""));
   std::cout << "done" << std::endl;
   return 0;

@@ -12,12 +12,15 @@
 // Every inner border line of the grid (x = x_i or y = y_j) carries one polyline from one side
 // of a frame to the other:
 //  - at each inner grid node, the corner point: the input point nearest to the node within the
-//    square of side s around it (s: the seam spacing); the horizontal and the vertical polyline
-//    through the node share it;
+//    square of side s around it (s: the seam spacing), or else a point at the node, at the
+//    height of the nearest input point of the two bands through it; the horizontal and the
+//    vertical polyline through the node share it;
 //  - between two nodes, the border is cut into slices of length about s (leaving s free next
 //    to a corner), and each slice gives the input point nearest to its centre within the band
 //    of width s around the border (an empty slice gives none);
-//  - an edge longer than s is split by points on it (refine());
+//  - an edge longer than s is split by points on it (refine()), and an edge whose diametral
+//    ball holds another seam point is split at that point's projection until none does
+//    (Gabriel_seams_3.h);
 //  - at the ends, a point of the frame on the border line, at the height of the seam point next
 //    to it.
 // The frame is a rectangle just outside the cloud whose sides bulge outward (frame_point()), so
@@ -29,6 +32,7 @@
 // triangles that touch them are dropped, as the skirt of an open surface).
 
 #include <CGAL/Lex_optimal_chains/Input_error.h>
+#include <CGAL/Lex_optimal_chains/internal/Gabriel_seams_3.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Kernel_traits.h>
@@ -158,13 +162,9 @@ public:
 
 private:
   // The polyline of border line i on `axis` (0: the vertical line x = x_i, 1: the horizontal
-  // line y = y_i), from the frame to the frame; `nodes_[axis][i][k]` is the index in it of the
-  // node of the k-th crossing border line.
-  struct Polyline
-  {
-    std::vector<Point> points;
-    std::vector<std::size_t> nodes;
-  };
+  // line y = y_i), from the frame to the frame; `nodes[k]` is the index in it of the node of
+  // the k-th crossing border line.
+  using Polyline = Seam_polyline<Point>;
 
   // coordinate `axis` of p
   static double coordinate(const Point& p, int axis) { return axis == 0 ? p.x() : p.y(); }
@@ -254,19 +254,29 @@ private:
           const int other = 1 - axis;
           return std::make_tuple(coordinate(*p, other), *p) < std::make_tuple(coordinate(*q, other), *q);
         });
-    // the corner points, from the bands of the vertical lines
-    std::vector<std::vector<const Point*>> corners(count_[0] + 1, std::vector<const Point*>(count_[1] + 1, nullptr));
+    // the corner points, from the bands of the vertical lines; a node without an input point
+    // within half a spacing gets a point of its own, at the height of the nearest point of the
+    // two bands through it (the seams still meet there, and the four tiles share it)
+    std::vector<std::vector<Point>> corners(count_[0] + 1, std::vector<Point>(count_[1] + 1));
     for(std::size_t i = 1; i < count_[0]; ++i)
       for(std::size_t j = 1; j < count_[1]; ++j) {
         const std::array<double, 2> node{border(0, i), border(1, j)};
         const Point* c = nearest(band[0][i - 1], 1, node[1] - 0.5 * spacing_, std::nextafter(node[1] + 0.5 * spacing_, HUGE_VAL), node);
-        if(c == nullptr)
+        if(c != nullptr) {
+          corners[i][j] = *c;
+          continue;
+        }
+        const Point* a = nearest(band[0][i - 1], 1, -HUGE_VAL, HUGE_VAL, node);
+        const Point* b = nearest(band[1][j - 1], 0, -HUGE_VAL, HUGE_VAL, node);
+        auto d2 = [&node](const Point* p) { return std::pow(p->x() - node[0], 2) + std::pow(p->y() - node[1], 2); };
+        if(b != nullptr && (a == nullptr || std::make_tuple(d2(b), *b) < std::make_tuple(d2(a), *a))) a = b;
+        if(a == nullptr)
           throw Input_error(Input_error_code::INVALID_PARAMETER,
-                            "no input point within " + std::to_string(0.5 * spacing_) + " of the tile corner (" +
+                            "no input point within " + std::to_string(0.5 * spacing_) + " of the border lines through the tile corner (" +
                               std::to_string(node[0]) + ", " + std::to_string(node[1]) +
                               "): the seams between tiles run through the points; give a larger seam spacing or "
                               "tile size, or tiles that avoid the gaps of the cloud");
-        corners[i][j] = c;
+        corners[i][j] = Point(node[0], node[1], a->z());
       }
     for(int axis = 0; axis < 2; ++axis) {
       const int other = 1 - axis;
@@ -277,7 +287,7 @@ private:
           // node k
           line.nodes.push_back(line.points.size());
           if(k == 0 || k == count_[other]) line.points.push_back(Point(0, 0, 0)); // a frame point, below
-          else line.points.push_back(axis == 0 ? *corners[i][k] : *corners[k][i]);
+          else line.points.push_back(axis == 0 ? corners[i][k] : corners[k][i]);
           if(k == count_[other]) break;
           // the slices between node k and node k + 1
           const double lo = k == 0 ? low_[other] : border(other, k) + spacing_;
@@ -303,9 +313,15 @@ private:
         line.points.front() = frame_point(other, false, border(axis, i), z_first);
         line.points.back() = frame_point(other, true, border(axis, i), z_last);
         refine(line);
-        for(std::size_t n = 1; n + 1 < line.points.size(); ++n) seam_points_.push_back(line.points[n]);
       }
     }
+    // edges that every tile can impose (Gabriel_seams_3.h)
+    std::vector<Polyline*> lines;
+    for(int axis = 0; axis < 2; ++axis)
+      for(Polyline& line : polylines_[axis]) lines.push_back(&line);
+    Gabriel_seams_3<Point>(lines, spacing_).split_until_gabriel();
+    for(const Polyline* line : lines)
+      for(std::size_t n = 1; n + 1 < line->points.size(); ++n) seam_points_.push_back(line->points[n]);
     std::sort(seam_points_.begin(), seam_points_.end());
     seam_points_.erase(std::unique(seam_points_.begin(), seam_points_.end()), seam_points_.end());
   }
