@@ -95,7 +95,7 @@ int main(int argc, char** argv)
       partition, PPS::parameters::remove_far_points(remove_far_points,
                  PPS::parameters::concurrency_weight(lambda1,
                  PPS::parameters::orthogonality_weight(lambda2,
-                 PPS::parameters::collapse_distance(epsilon > 0 ? epsilon : 0.01 * scale,
+                 PPS::parameters::collapse_distance(o.epsilon_given ? epsilon : 0.01 * scale,
                  PPS::parameters::maximum_angle(alpha_max))))));
 
     std::vector<Partition::Polygon_with_holes_2> cells;

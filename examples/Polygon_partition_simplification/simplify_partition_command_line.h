@@ -1,12 +1,11 @@
 // The command line of simplify_partition: its options, their checks and the parse, shared by
 // simplify_partition.cpp and the fuzz harness of the option parsing
-// (test/Polygon_partition_simplification/fuzz_simplify_command_line.cpp). Everything that can
-// be checked without reading a file is checked at the parse.
+// (test/Polygon_partition_simplification/fuzz_simplify_command_line.cpp). The output format is
+// checked at the parse; the weights, the angle and epsilon are checked by the library, whose
+// reason the program prints (the demo's plugin gives the same).
 
 #ifndef URBAN_SIMPLIFY_PARTITION_COMMAND_LINE_H
 #define URBAN_SIMPLIFY_PARTITION_COMMAND_LINE_H
-
-#include "../Lex_optimal_chains/Command_line_checks.h"
 
 #include <CLI/CLI.hpp>
 
@@ -28,7 +27,8 @@ struct Options
 {
   std::string input, output, svg;
   double lambda1 = 0.5, lambda2 = 5, alpha_max = 5;
-  double epsilon = -1; // not given: 1% of the half-diagonal of the partition
+  double epsilon = 0;
+  bool epsilon_given = false; // if not: 1% of the half-diagonal of the partition
   bool json = false, remove_far_points = false;
 };
 
@@ -48,14 +48,10 @@ public:
                                                              : "must end in .geojson, .json or .wkt, not " + name;
         },
         "CELLS"));
-    app.add_option("--lambda1", o.lambda1, "weight of the concurrency term (edge collapses), default 0.5")
-      ->check(urban_programs::non_negative_number());
-    app.add_option("--lambda2", o.lambda2, "weight of the orthogonality term, default 5")->check(urban_programs::non_negative_number());
-    app.add_option("--epsilon", o.epsilon, "longest edge to collapse, input units, also the unit of length of the energy (default: 1% of the half-diagonal)")
-      ->check(urban_programs::positive_number());
-    app.add_option("--alpha-max", o.alpha_max, "angle to 90 degrees under which lines are pulled to orthogonality (0 to 90, default 5)")
-      ->check(urban_programs::non_negative_number())
-      ->check(CLI::Range(0.0, 90.0));
+    app.add_option("--lambda1", o.lambda1, "weight of the concurrency term (edge collapses), default 0.5");
+    app.add_option("--lambda2", o.lambda2, "weight of the orthogonality term, default 5");
+    app.add_option("--epsilon", o.epsilon, "longest edge to collapse, input units, also the unit of length of the energy (default: 1% of the half-diagonal)");
+    app.add_option("--alpha-max", o.alpha_max, "angle to 90 degrees under which lines are pulled to orthogonality (0 to 90, default 5)");
     app.add_option("--svg", o.svg, "draws the partition before and after, side by side");
     app.add_flag("--remove-far-points", o.remove_far_points,
                  "case (b2) of the thesis: remove the points sent outside the partition with their edges");
@@ -66,7 +62,11 @@ public:
 
   // Parses the arguments; afterwards the options passed their checks. Throws CLI::ParseError
   // otherwise (CLI::CallForHelp for --help).
-  void parse(int argc, const char* const* argv) { app.parse(argc, argv); }
+  void parse(int argc, const char* const* argv)
+  {
+    app.parse(argc, argv);
+    options.epsilon_given = app.count("--epsilon") > 0;
+  }
 
   CLI::App app{"Kinetic partition of 2D segments and its simplification in line space"};
   Options options;
