@@ -26,6 +26,8 @@ if(CCACHE_PROGRAM)
   set(CMAKE_CXX_COMPILER_LAUNCHER "${CMAKE_COMMAND}" -E env "CCACHE_BASEDIR=${urban_checkout}" "${CCACHE_PROGRAM}")
 endif()
 
+include(${CMAKE_CURRENT_LIST_DIR}/Urban_sanitizers.cmake)
+
 # shared with the folders configured on their own
 option(URBAN_WITH_MPI "Build lex_reconstruct_mpi and lod2_reconstruct_mpi (work dealt out to MPI ranks) when MPI is found" ON)
 
@@ -83,6 +85,8 @@ if(NOT TARGET Polygon_partition_simplification)
   if(TARGET CGAL::TBB_support)
     target_link_libraries(Polygon_partition_simplification INTERFACE CGAL::TBB_support)
   endif()
+  # Line_partition_2 checks and lists its cells with CGAL's Arrangement_2
+  urban_no_vptr_check(Polygon_partition_simplification)
 endif()
 
 # Real data shipped by Debian's libcgal-demo, unpacked in the build tree (never committed).

@@ -16,7 +16,7 @@
 #                                     CGAL Lab (Qt6: Debian 12's Qt 6.4; the Lab's sources
 #                                     from Debian 13's libcgal-demo, unpacked the same way);
 #                                     then each fuzz harness of a reader and of the command
-#                                     line for 20 s (scripts/fuzz.sh: libFuzzer,
+#                                     lines for 20 s (scripts/fuzz.sh: libFuzzer,
 #                                     AddressSanitizer and UndefinedBehaviorSanitizer, Debian's
 #                                     clang)
 #   bash scripts/quickstart.sh demo   same set-up, builds CGAL's Polyhedron demo with the plugins
@@ -97,8 +97,9 @@ else
   # programs are those of the first pass
   KINDS="Tests Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF -DURBAN_BUILD_DEMO=ON \
     -DURBAN_BUILD_EXAMPLES=OFF -DURBAN_DATA_SWEEP=OFF
-  # the readers and lex_reconstruct's command line under libFuzzer, from their seed corpora
-  # (fuzz_kinetic_partition, at about 16 scenes a second, is run on its own; ctest replays its
-  # corpus)
-  bash scripts/fuzz.sh 20 fuzz_point_file fuzz_polyline_file fuzz_segments_file fuzz_footprints fuzz_command_line
+  # the readers and the command lines of the three programs under libFuzzer, from their seed
+  # corpora (fuzz_kinetic_partition, at about 16 scenes a second, is run on its own; ctest
+  # replays its corpus)
+  bash scripts/fuzz.sh 20 fuzz_point_file fuzz_polyline_file fuzz_segments_file fuzz_footprints fuzz_command_line \
+    fuzz_lod2_command_line fuzz_simplify_command_line
 fi

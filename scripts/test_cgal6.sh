@@ -8,8 +8,9 @@
 # (Lex_optimal_chains, Polygon_partition_simplification; default both) and KINDS choose the tests
 # that ctest runs. JOBS (default 2) jobs build and test; the compiler goes through ccache when present (CCACHE_DISABLE=1: not).
 # KINDS (default "Tests Examples"): the tests of the test folders, of the example folders, or both;
-# and Demo: the headless tests of the plugins in CGAL Lab (configure with -DURBAN_BUILD_DEMO=ON;
-# CGAL's Qt6 headers and Lab sources are then unpacked too: scripts/fetch_cgal6.sh --lab).
+# Demo: the headless tests of the plugins in CGAL Lab (configure with -DURBAN_BUILD_DEMO=ON;
+# CGAL's Qt6 headers and Lab sources are then unpacked too: scripts/fetch_cgal6.sh --lab); Sweep:
+# the data sweep (test/data_sweep, label sweep).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -47,7 +48,8 @@ for kind in "${kinds[@]}"; do
   case "$kind" in
     Tests|Examples) for package in "${packages[@]}"; do labels+="${package}_${kind}|"; done ;;
     Demo) labels+="demo|" ;;
-    *) fail "unknown kind '$kind' (Tests, Examples or Demo)" ;;
+    Sweep) labels+="sweep|" ;;
+    *) fail "unknown kind '$kind' (Tests, Examples, Demo or Sweep)" ;;
   esac
 done
 labels="^(${labels%|})$"
