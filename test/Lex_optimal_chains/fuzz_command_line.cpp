@@ -6,29 +6,19 @@
 // most 64). A parse ends in exactly one parsed subcommand whose options passed their checks,
 // or in a CLI::ParseError, which main() prints as one line with exit code 1. A crash, another
 // exception, a parse with no or several subcommands, or a sanitizer report is a finding.
-#include "../fuzz_support/fuzz_input_file.h"
+#include "../fuzz_support/fuzz_command_line.h"
 
 #include "../../examples/Lex_optimal_chains/lex_reconstruct/command_line.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <exception>
 #include <string>
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  std::vector<std::string> storage;
-  const std::vector<const char*> argv = urban_fuzz::arguments(data, size, "lex_reconstruct", storage);
-
   lex_reconstruct::Command_line command_line;
-  try {
-    command_line.parse(int(argv.size()), argv.data());
-  } catch(const CLI::ParseError&) {
-    return 0; // a refusal (or --help): the documented outcome of a bad command line
-  } catch(const std::exception& e) {
-    urban_fuzz::finding(std::string("the parse threw something else than CLI::ParseError: ") + e.what());
-  }
+  if(!urban_fuzz::parses(command_line, data, size, "lex_reconstruct")) return 0; // a refusal (or --help)
   const int parsed = int(command_line.closed.parsed()) + int(command_line.open.parsed()) +
                      int(command_line.features.parsed()) + int(command_line.tiles.parsed());
   if(parsed != 1) urban_fuzz::finding(std::to_string(parsed) + " subcommands parsed, not one");

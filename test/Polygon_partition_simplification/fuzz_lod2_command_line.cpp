@@ -7,29 +7,20 @@
 // format the program writes, classes in 0..255 on both sides of the colon, finite weights >= 0,
 // threads >= 0), or in a CLI::ParseError, which main() prints as one line with exit code 1. A
 // crash, another exception, options that break a promise, or a sanitizer report is a finding.
-#include "../fuzz_support/fuzz_input_file.h"
+#include "../fuzz_support/fuzz_command_line.h"
 
 #include "../../examples/Polygon_partition_simplification/lod2_reconstruct_command_line.h"
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <exception>
 #include <string>
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  std::vector<std::string> storage;
-  const std::vector<const char*> argv = urban_fuzz::arguments(data, size, "lod2_reconstruct", storage);
   lod2_reconstruct::Command_line command_line;
-  try {
-    command_line.parse(int(argv.size()), argv.data());
-  } catch(const CLI::ParseError&) {
-    return 0; // a refusal (or --help): the documented outcome of a bad command line
-  } catch(const std::exception& e) {
-    urban_fuzz::finding(std::string("the parse threw something else than CLI::ParseError: ") + e.what());
-  }
+  if(!urban_fuzz::parses(command_line, data, size, "lod2_reconstruct")) return 0; // a refusal (or --help)
   const lod2_reconstruct::Options& o = command_line.options;
   bool format = false;
   for(const char* e : {".off", ".ply", ".obj", ".city.json", ".city.jsonl"}) format = format || lod2_reconstruct::ends_with(o.output, e);

@@ -7,28 +7,19 @@
 // the checks promise (an output format the program writes; the numbers are the library's to
 // check), or in a CLI::ParseError, which main() prints as one line with exit code 1. A crash,
 // another exception, options that break a promise, or a sanitizer report is a finding.
-#include "../fuzz_support/fuzz_input_file.h"
+#include "../fuzz_support/fuzz_command_line.h"
 
 #include "../../examples/Polygon_partition_simplification/simplify_partition_command_line.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <exception>
 #include <string>
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  std::vector<std::string> storage;
-  const std::vector<const char*> argv = urban_fuzz::arguments(data, size, "simplify_partition", storage);
   simplify_partition::Command_line command_line;
-  try {
-    command_line.parse(int(argv.size()), argv.data());
-  } catch(const CLI::ParseError&) {
-    return 0; // a refusal (or --help): the documented outcome of a bad command line
-  } catch(const std::exception& e) {
-    urban_fuzz::finding(std::string("the parse threw something else than CLI::ParseError: ") + e.what());
-  }
+  if(!urban_fuzz::parses(command_line, data, size, "simplify_partition")) return 0; // a refusal (or --help)
   const simplify_partition::Options& o = command_line.options;
   const std::string format = simplify_partition::extension(o.output);
   if(format != "geojson" && format != "json" && format != "wkt") urban_fuzz::finding("an output format the program does not write: " + o.output);

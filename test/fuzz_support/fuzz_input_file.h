@@ -3,8 +3,7 @@
 //
 // What the fuzz harnesses of both packages share: the readers under test take a path, so the
 // fuzzer's bytes are written to a file of this process, with the extension that selects the
-// reader; the parsers of command lines take arguments, one per line of the fuzzer's bytes; and
-// a finding is reported by aborting, after a line that says what was found.
+// reader; and a finding is reported by aborting, after a line that says what was found.
 
 #ifndef URBAN_FUZZ_INPUT_FILE_H
 #define URBAN_FUZZ_INPUT_FILE_H
@@ -16,7 +15,6 @@
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <vector>
 #include <unistd.h>
 
 namespace urban_fuzz {
@@ -41,27 +39,6 @@ inline void remove_input_file(const std::string& path)
 {
   std::error_code ignored;
   std::filesystem::remove(path, ignored);
-}
-
-// The command line `program` followed by the lines of the `size` bytes (at most 64 arguments),
-// as argv: the strings are kept in `storage`.
-inline std::vector<const char*> arguments(const std::uint8_t* data, std::size_t size, const std::string& program,
-                                          std::vector<std::string>& storage)
-{
-  storage.assign(1, program);
-  std::string argument;
-  for(std::size_t i = 0; i < size && storage.size() <= 64; ++i) {
-    if(data[i] == '\n') {
-      storage.push_back(argument);
-      argument.clear();
-    } else {
-      argument.push_back(char(data[i]));
-    }
-  }
-  if(!argument.empty() && storage.size() <= 64) storage.push_back(argument);
-  std::vector<const char*> argv;
-  for(const std::string& a : storage) argv.push_back(a.c_str());
-  return argv;
 }
 
 // A finding: what the harness checks does not hold.
