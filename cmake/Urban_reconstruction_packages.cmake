@@ -27,6 +27,7 @@ if(CCACHE_PROGRAM)
 endif()
 
 include(${CMAKE_CURRENT_LIST_DIR}/Urban_sanitizers.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/Urban_programs.cmake)
 
 # shared with the folders configured on their own
 option(URBAN_WITH_MPI "Build lex_reconstruct_mpi and lod2_reconstruct_mpi (work dealt out to MPI ranks) when MPI is found" ON)
