@@ -11,9 +11,9 @@
 // overhang their walls (eaves, sampled as the roof but not part of the truth, whose walls
 // stand on the footprints as LOD2 models' do); every flat roof gets them, so in the scene of two
 // heights the main roof's eave would overhang the annex's roof: the tests give eaves to the
-// L-shaped building only. The samples depend only on the seed: the uniform and normal variates
-// are made here from std::mt19937, whose output the standard fixes, not by the library's
-// distributions, which it does not.
+// L-shaped building only. The samples depend only on the seed, whatever the compiler: the
+// uniform and normal variates are made here from std::mt19937, whose output the standard fixes,
+// not by the library's distributions, which it does not, and one draw is one statement.
 // Also: distances of points to a mesh and between two meshes both ways (sampled Hausdorff).
 
 #ifndef CGAL_POLYGON_PARTITION_SIMPLIFICATION_TEST_SYNTHETIC_BUILDINGS_H
@@ -279,8 +279,11 @@ inline void sample_polygon(const std::vector<Point_3>& polygon, const std::vecto
   const Bbox_2 box = bbox_2(flat.begin(), flat.end());
   const long count = std::lround(density * std::max(area, 0.));
   for(long k = 0; k < count;) {
-    const Point_2 q(box.xmin() + uniform(random) * (box.xmax() - box.xmin()),
-                    box.ymin() + uniform(random) * (box.ymax() - box.ymin()));
+    // two draws in the arguments of one call would be unsequenced (g++ makes the second
+    // first, Clang the first): the ordinate is drawn first, as g++ did when the scenes were
+    // tuned
+    const double v = uniform(random), u = uniform(random);
+    const Point_2 q(box.xmin() + u * (box.xmax() - box.xmin()), box.ymin() + v * (box.ymax() - box.ymin()));
     if(bounded_side_2(flat.begin(), flat.end(), q, Kernel()) != ON_BOUNDED_SIDE) continue;
     const Point_3 p = frame.origin + q.x() * frame.u + q.y() * frame.v;
     const Point_2 below(p.x(), p.y());

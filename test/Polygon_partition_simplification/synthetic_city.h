@@ -195,6 +195,8 @@ enum class Lot_kind { GABLE, HIP, L_SHAPED, FLAT, STEPPED, COURTYARD, TERRACED, 
 // `cycle` (the number of earlier lots of that kind) chooses the roof of the building without walls.
 inline std::vector<City_part> lot_parts(Lot_kind kind, std::size_t cycle, std::mt19937& random)
 {
+  // one draw a statement, in the order g++ made them when the city was tuned (the draws in the
+  // arguments of one call are unsequenced: g++ makes the last one first, Clang the first)
   auto u = [&](double low, double high) { return uniform_in(random, low, high); };
   switch(kind) {
   case Lot_kind::GABLE: {
@@ -207,23 +209,28 @@ inline std::vector<City_part> lot_parts(Lot_kind kind, std::size_t cycle, std::m
   }
   case Lot_kind::L_SHAPED: {
     const double length = u(14, 25), width = u(12, 22);
-    return {{l_shaped_building(length, width, length * u(0.4, 0.65), width * u(0.35, 0.6), u(4, 15)), {}, "l_shaped"}};
+    const double height = u(4, 15), notch_y = width * u(0.35, 0.6), notch_x = length * u(0.4, 0.65);
+    return {{l_shaped_building(length, width, notch_x, notch_y, height), {}, "l_shaped"}};
   }
   case Lot_kind::FLAT: {
     const double length = u(8, 25);
-    return {{flat_box_building(length, u(8, (std::min)(length, 20.)), u(4, 15)), {}, "flat"}};
+    const double height = u(4, 15), width = u(8, (std::min)(length, 20.));
+    return {{flat_box_building(length, width, height), {}, "flat"}};
   }
   case Lot_kind::STEPPED: {
     const double length = u(14, 25), width = u(9, 16), height = u(8, 15);
-    return {{two_height_building(length, width, height, length * u(0.3, 0.6), u(4, 8), u(4, height - 3)), {}, "stepped"}};
+    const double annex_height = u(4, height - 3), annex_depth = u(4, 8), annex_width = length * u(0.3, 0.6);
+    return {{two_height_building(length, width, height, annex_width, annex_depth, annex_height), {}, "stepped"}};
   }
   case Lot_kind::COURTYARD: {
     const double length = u(16, 22), width = u(16, 22);
-    return {courtyard_building(length, width, u(5, 6.5), u(6, 15))};
+    const double height = u(6, 15), wing = u(5, 6.5);
+    return {courtyard_building(length, width, wing, height)};
   }
   case Lot_kind::TERRACED: {
     const double length_a = u(8, 12), length_b = u(8, 12), width = u(8, 12), eave = u(6, 9);
-    return terraced_houses(length_a, length_b, width, eave, capped_slope(u(30, 45), eave, width / 2), u(4, eave - 1.5));
+    const double height_b = u(4, eave - 1.5), slope = capped_slope(u(30, 45), eave, width / 2);
+    return terraced_houses(length_a, length_b, width, eave, slope, height_b);
   }
   case Lot_kind::NO_WALLS: {
     std::vector<City_part> parts = lot_parts(Lot_kind(cycle % 4), cycle, random);
@@ -296,8 +303,8 @@ inline std::vector<Tree> plant_trees(const Kernel::Iso_rectangle_2& lot, const s
   for(int draw = 0; draw < 40 && trees.size() < wanted; ++draw) {
     const double radius = uniform_in(random, 2, 4), height_radius = radius * uniform_in(random, 0.7, 1.2);
     const double center_z = (std::max)(uniform_in(random, 4, 10), height_radius + 2);
-    const Point_2 center(uniform_in(random, lot.xmin() + radius + 0.5, lot.xmax() - radius - 0.5),
-                         uniform_in(random, lot.ymin() + radius + 0.5, lot.ymax() - radius - 0.5));
+    const double y = uniform_in(random, lot.ymin() + radius + 0.5, lot.ymax() - radius - 0.5); // (g++'s order)
+    const Point_2 center(uniform_in(random, lot.xmin() + radius + 0.5, lot.xmax() - radius - 0.5), y);
     if(distance_to_footprints(center, parts) < radius + 2) continue;
     if(std::any_of(trees.begin(), trees.end(), [&](const Tree& tree) {
          return std::sqrt(squared_distance(center, tree.center)) < radius + tree.radius;
@@ -442,7 +449,8 @@ inline City make_city(const City_options& options = {})
     }
     std::vector<City_part> parts = lot_parts(kinds[lot], lot / 8, layout);
     const double angle = lot % 5 == 3 ? 0 : uniform_in(layout, 0, CGAL_PI);
-    const Point_2 target(x0 + s / 2 + uniform_in(layout, -0.5, 0.5), y0 + s / 2 + uniform_in(layout, -0.5, 0.5));
+    const double dy = uniform_in(layout, -0.5, 0.5), dx = uniform_in(layout, -0.5, 0.5); // (g++'s order)
+    const Point_2 target(x0 + s / 2 + dx, y0 + s / 2 + dy);
     place_parts(parts, angle, s / 2 - 3, target);
     const std::vector<Tree> trees = plant_trees(square, parts, layout);
     sample_lot(square, parts, trees, int(city.buildings.size()), options, sampling, city.samples);
