@@ -11,7 +11,10 @@
 #                                     against Debian's CGAL 5.5.1; then the tests of both packages
 #                                     again against CGAL 6.0.1 (Debian 13's
 #                                     libcgal-dev, unpacked into build/cgal6 by
-#                                     scripts/fetch_cgal6.sh, never installed), in build-cgal6/,
+#                                     scripts/fetch_cgal6.sh, never installed), in build-cgal6/
+#                                     (URBAN_SANITIZE=1: in build-cgal6-sanitized/, built by Debian's clang with
+#                                     AddressSanitizer and UndefinedBehaviorSanitizer, the data
+#                                     sweep included; any report fails its test),
 #                                     with the headless tests of the plugins in CGAL 6.0.1's
 #                                     CGAL Lab (Qt6: Debian 12's Qt 6.4; the Lab's sources
 #                                     from Debian 13's libcgal-demo, unpacked the same way);
@@ -91,12 +94,20 @@ else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON -DURBAN_BUILD_DEMO=ON
   cmake --build build -j"$jobs"
   (cd build && ctest --output-on-failure -j"$jobs")
-  # the second pass: the tests of the test folders and of the demo, built with what they run
-  # (the plugins in CGAL Lab, the command-line programs), not the examples nor the MPI programs
-  # (the sources of lod2_reconstruct and lex_reconstruct once more), nor the data sweep, whose
-  # programs are those of the first pass
-  KINDS="Tests Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- -DURBAN_WITH_MPI=OFF -DURBAN_BUILD_DEMO=ON \
-    -DURBAN_BUILD_EXAMPLES=OFF -DURBAN_DATA_SWEEP=OFF
+  # the second pass, on CGAL 6.0.1: the tests of the test folders and of the demo, built with
+  # what they run (the plugins in CGAL Lab, the command-line programs), not the examples nor
+  # the MPI programs (the sources of lod2_reconstruct and lex_reconstruct once more), nor the
+  # data sweep, whose programs are those of the first pass. With URBAN_SANITIZE=1: built by
+  # Clang with AddressSanitizer and UndefinedBehaviorSanitizer, the data sweep included (about
+  # 17 minutes more on 2 cores without ccache: cmake/Urban_sanitizers.cmake)
+  cgal6_options=(-DURBAN_WITH_MPI=OFF -DURBAN_BUILD_DEMO=ON -DURBAN_BUILD_EXAMPLES=OFF)
+  if [ "${URBAN_SANITIZE:-0}" = 1 ]; then
+    KINDS="Tests Sweep Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6-sanitized -- "${cgal6_options[@]}" \
+      -DURBAN_DATA_SWEEP=ON -DURBAN_SANITIZERS=ON -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
+  else
+    KINDS="Tests Demo" JOBS="$jobs" bash scripts/test_cgal6.sh build-cgal6 -- "${cgal6_options[@]}" \
+      -DURBAN_DATA_SWEEP=OFF -DURBAN_SANITIZERS=OFF
+  fi
   # the readers and the command lines of the three programs under libFuzzer, from their seed
   # corpora (fuzz_kinetic_partition, at about 16 scenes a second, is run on its own; ctest
   # replays its corpus)

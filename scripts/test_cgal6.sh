@@ -66,6 +66,8 @@ if grep -q 'warning:' "$build/build.log"; then
 fi
 
 status=0
+# with URBAN_SANITIZERS: UndefinedBehaviorSanitizer's reports with their call stacks
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 (cd "$build" && ctest -j"$jobs" -L "$labels" --output-on-failure) || status=$?
 echo "test_cgal6: ${packages[*]} built and tested with CGAL ${cgal%% *} (${cgal#* })"
 exit $status
