@@ -16,6 +16,11 @@
 //   benchmark_tiled_surface --ranks [N ...]          the MPI table
 //   benchmark_tiled_surface --one MODE N [THREADS]   one measurement (delaunay | untiled | tiled | streamed), JSON
 //   benchmark_tiled_surface --one write N FILE       writes the terrain of N points to FILE (.ply)
+//   benchmark_tiled_surface --one write_dense N NOISE FILE
+//                                                    writes the dense block with walls of the tests
+//                                                    (500 points per square metre, N from above,
+//                                                    heights with noise NOISE) to FILE (.ply), for
+//                                                    lex_reconstruct tiles and check_output_mesh
 //   benchmark_tiled_surface --one out_of_core N THREADS FILE   the tiles out of core from FILE, JSON
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -28,6 +33,7 @@
 #include <CGAL/IO/write_points.h>
 
 #include "benchmark_support.h"
+#include "dense_block_with_walls.h"
 
 #if defined(LEX_RECONSTRUCT_MPI) && defined(MPIEXEC)
 #include <nlohmann/json.hpp>
@@ -190,6 +196,11 @@ int main(int argc, char** argv)
   if(argc == 5 && std::string(argv[1]) == "--one" && std::string(argv[2]) == "write") {
     const std::vector<Point> pts = noisy_terrain<Point>(std::stoul(argv[3]));
     return CGAL::IO::write_points(argv[4], pts, CGAL::parameters::use_binary_mode(true)) ? 0 : 1;
+  }
+  if(argc == 6 && std::string(argv[1]) == "--one" && std::string(argv[2]) == "write_dense") {
+    const double density = 500, side = std::sqrt(double(std::stoul(argv[3])) / density);
+    const std::vector<Point> pts = dense_block_with_walls<Point>(side, density, std::stod(argv[4]), 1);
+    return CGAL::IO::write_points(argv[5], pts, CGAL::parameters::use_binary_mode(true)) ? 0 : 1;
   }
   if(argc == 6 && std::string(argv[1]) == "--one" && std::string(argv[2]) == "out_of_core")
     return out_of_core(std::stoul(argv[3]), unsigned(std::stoul(argv[4])), argv[5]);

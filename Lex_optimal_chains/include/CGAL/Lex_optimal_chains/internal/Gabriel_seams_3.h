@@ -124,8 +124,10 @@ private:
       for(; it != grid_.end() && it->first <= Cell(i, high.second); ++it) {
         const Point& t = *it->second;
         if(t == p || t == q || side(p, q, t) == ON_UNBOUNDED_SIDE) continue;
-        // strictly inside (0, 1) in exact terms; kept away from the ends in floating point
-        const double u = std::clamp(((t.x() - p.x()) * dx + (t.y() - p.y()) * dy + (t.z() - p.z()) * dz) / length2, 0.01, 0.99);
+        // strictly inside (0, 1) in exact terms; kept off the ends in floating point, by as
+        // little as keeps the split point apart from them: a split kept 1% away from an end,
+        // where the projection is nearer to it, leaves t in the ball of the longer part
+        const double u = std::clamp(((t.x() - p.x()) * dx + (t.y() - p.y()) * dy + (t.z() - p.z()) * dz) / length2, 1e-6, 1 - 1e-6);
         if(best_point == nullptr || std::abs(u - 0.5) < std::abs(best - 0.5) ||
            (std::abs(u - 0.5) == std::abs(best - 0.5) && t < *best_point)) {
           best = u;
