@@ -1,6 +1,6 @@
 # AddressSanitizer and UndefinedBehaviorSanitizer for the tests, the examples and the
-# command-line programs (URBAN_SANITIZERS=ON; the CGAL 6.0.1 pass of the README's test command
-# builds them so, with Clang): the folders of the tests and of the examples call
+# command-line programs (URBAN_SANITIZERS=ON; `URBAN_SANITIZE=1 bash scripts/quickstart.sh test`
+# builds the CGAL 6.0.1 pass so, with Clang): the folders of the tests and of the examples call
 # urban_sanitize_this_directory(). The demo is left alone (Qt and the GL drivers are not ours),
 # apart from the command-line programs it builds as references (urban_sanitize_target).
 # A report aborts the program (-fno-sanitize-recover=all; LeakSanitizer exits with an error
@@ -8,8 +8,8 @@
 # Release; -g1 gives the reports their source lines. NDEBUG stays as in
 # Release: the programs check what they check in Release, and the tests turn their checks on
 # themselves (-UNDEBUG). Clang compiles an instrumented test of the packages in about 1.2 times
-# the time g++ takes at -O3, g++ in about 2.1 times (and twice the memory): the test command's
-# sanitized pass uses Clang.
+# the time g++ takes at -O3, g++ in about 2.1 times (and twice the memory): the sanitized pass
+# of the test command uses Clang.
 include_guard(GLOBAL)
 option(URBAN_SANITIZERS "Build the tests, examples and programs with AddressSanitizer and UndefinedBehaviorSanitizer (g++ or Clang)" OFF)
 if(URBAN_SANITIZERS AND NOT CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
