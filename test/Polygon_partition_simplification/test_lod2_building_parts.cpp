@@ -953,6 +953,53 @@ void test_outline_corners_are_closed()
   assert(away.size() == 3);
 }
 
+// Pieces of roof outlines that cut across a corner of two detected walls are removed: on a
+// building whose walls 1 and 2 meet at the convex corner (20, 0), and walls 4 and 5 at the
+// concave corner (10, 8) (planes 0 ground, 3 roof), a 1.6 m piece with an end on each wall's
+// line near the corner (the outline of the roof's points cuts the convex corner and bridges
+// the concave one) goes, and the other segments stay in their order. A piece along one wall,
+// a piece longer than the longest, a piece with an end away from every wall line, a piece
+// between two parallel walls and the corner of outlines without walls (nothing is vertical)
+// stay.
+void test_corner_chords_are_removed()
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Segment = PPS::Building_segment_2<K>;
+  const std::vector<bool> is_vertical{false, true, true, false, true, true};
+  const std::vector<Segment> walls{
+    piece(0, 0, 19.3, 0.02, true, 1, 3),  // wall 1 under the roof, 0.7 m short of the corner
+    piece(0, 0, 19.1, 0, true, 0, 1),     // wall 1 on the ground
+    piece(20, 0.8, 20, 20, true, 2, 3),   // wall 2 under the roof
+    piece(10, 8.6, 10, 18, true, 4, 3),   // wall 4, north of the concave corner
+    piece(10.7, 8, 24, 8.01, true, 5, 3)}; // wall 5, east of it
+  const Segment convex = piece(19.0, 0.05, 20.02, 1.2, true, 3, 3), concave = piece(10.6, 7.98, 10.01, 8.9, true, 3, 3);
+  const std::vector<Segment> kept{
+    piece(2, 0.1, 8, 0.1, true, 3, 3),      // along wall 1: both ends near one wall
+    piece(15, 0.05, 20, 4.5, true, 3, 3),   // 6.7 m, longer than the longest (3 m)
+    piece(19.0, 0.05, 21.5, 1.2, true, 3, 3), // its target is 1.5 m from wall 2's line
+    piece(2, 20.2, 3, 19.9, false, 3, 6)};  // a ridge
+  std::vector<Segment> segments = walls;
+  segments.insert(segments.begin() + 2, convex);
+  segments.push_back(concave);
+  segments.insert(segments.end(), kept.begin(), kept.end());
+  PPS::internal::remove_corner_chords(segments, is_vertical, 0.6, 3.);
+  std::vector<Segment> expected = walls;
+  expected.insert(expected.end(), kept.begin(), kept.end());
+  assert(segments.size() == expected.size());
+  for(std::size_t i = 0; i < expected.size() && i < segments.size(); ++i)
+    assert(segments[i].segment == expected[i].segment && segments[i].first_plane == expected[i].first_plane);
+  // between two parallel walls (a 1.2 m gap closed by the outline): kept
+  std::vector<Segment> parallel{piece(0, 0, 10, 0, true, 1, 3), piece(10.5, 1.2, 20, 1.2, true, 2, 3),
+                                piece(9.9, 0.05, 10.6, 1.15, true, 3, 3)};
+  PPS::internal::remove_corner_chords(parallel, is_vertical, 0.6, 3.);
+  assert(parallel.size() == 3);
+  // the same corner with outlines on both sides and no wall plane: kept (close_outline_corners()
+  // adds the corner and the graph cut chooses)
+  std::vector<Segment> outlines{piece(0, 0, 19.3, 0.02, true, 3, 3), piece(20, 0.8, 20, 20, true, 3, 3), convex};
+  PPS::internal::remove_corner_chords(outlines, std::vector<bool>(6, false), 0.6, 3.);
+  assert(outlines.size() == 3);
+}
+
 int main()
 {
   test_alpha_expansion_against_brute_force();
@@ -965,6 +1012,7 @@ int main()
   test_footprint_replaces_outlines();
   test_ridges_reach_the_footprint();
   test_outline_corners_are_closed();
+  test_corner_chords_are_removed();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;
 }

@@ -314,7 +314,8 @@ void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const
         {{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}});
   evidence.cell_of_point = arrangement.locate(evidence.points);
   // squares of half the planes' distance: the ground of a yard a few metres wide is open above
-  evidence.open_above = open_above(evidence.points, 0.5 * settings.lift.facade_distance, settings.lift.height_threshold);
+  evidence.open_above =
+    open_above(evidence.points, 0.5 * settings.lift.facade_distance, settings.lift.height_threshold);
   if(settings.lift.facade_samples > 0) {
     evidence.facades = facade_evidence<Kernel>(points, planes, settings.lift.facade_distance, settings.lift.facade_samples);
     evidence.cell_in_front = arrangement.locate(evidence.facades.in_front);
@@ -405,7 +406,12 @@ LOD2_report reconstruct_lod2_from_input(Input& input, CGAL::Surface_mesh<Point>&
   auto segments = building_segments<Kernel>(input.points, planes, input.settings.segments_for(planes));
   replace_outlines_by_footprint(input.settings.footprint, input.settings.lift.facade_distance, segments);
   extend_ridges_to_footprint(input.settings.footprint, segments);
-  if(input.settings.footprint.empty()) close_outline_corners(segments, 2 * planes.spacing, 10 * planes.spacing);
+  if(input.settings.footprint.empty()) {
+    std::vector<bool> is_vertical;
+    for(const auto& plane : planes.planes) is_vertical.push_back(plane.is_vertical);
+    remove_corner_chords(segments, is_vertical, 2 * planes.spacing, 10 * planes.spacing);
+    close_outline_corners(segments, 2 * planes.spacing, 10 * planes.spacing);
+  }
   const std::vector<typename Kernel::Segment_2> segments_2 = distinct_segments(segments);
   for(const auto& s : segments) report.facade_segments += s.is_facade ? 1 : 0;
   report.segments = segments_2.size();

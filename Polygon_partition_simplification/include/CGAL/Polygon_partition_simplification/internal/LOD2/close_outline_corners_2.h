@@ -112,6 +112,89 @@ void close_outline_corners(std::vector<Building_segment_2<Kernel>>& segments, do
   }
 }
 
+/// The line of a facade segment along a wall (the intersection of a wall's plane with a roof or
+/// the ground): the segment, the wall's plane, its source, its unit direction and its length.
+struct Wall_line_2
+{
+  std::size_t segment, wall;
+  std::array<double, 2> source, direction;
+  double length;
+};
+
+/// the wall line of `lines` nearest to `p` whose line passes within `radius` of `p` with `p`'s
+/// projection within `reach` of the segment; ties go to the first
+inline std::optional<Wall_line_2> nearest_wall_line(const std::vector<Wall_line_2>& lines, const std::array<double, 2>& p,
+                                                    double radius, double reach)
+{
+  std::optional<Wall_line_2> nearest;
+  double best = radius;
+  for(const Wall_line_2& line : lines) {
+    const double wx = p[0] - line.source[0], wy = p[1] - line.source[1];
+    const double distance = std::abs(line.direction[0] * wy - line.direction[1] * wx);
+    const double along = line.direction[0] * wx + line.direction[1] * wy;
+    if(distance <= best && (!nearest || distance < best) && along >= -reach && along <= line.length + reach) {
+      best = distance;
+      nearest = line;
+    }
+  }
+  return nearest;
+}
+
+/// Removes the pieces of roof outlines that cut across a corner of two walls whose planes are
+/// detected. The segments along both walls (their intersections with the roof and the ground)
+/// give the corner; a piece B of a roof's outline at most `longest` long whose two ends lie
+/// within `radius` of the lines of such segments of two different walls, which meet at 30
+/// degrees or more within the length of B plus `radius` of both ends, only cuts that corner off:
+/// the roof's points thin out toward a convex corner, and an alpha shape bridges a concave one.
+/// Kept, B makes a small corner cell whose few points weigh less in the graph cut than its two
+/// walls against the one along B, so the model loses a convex corner or fills a concave one.
+/// Without B, the walls' lines meet at the corner in the kinetic partition. A true cut corner of
+/// a building whose walls are seen has a wall of its own. `is_vertical` tells, per plane index,
+/// whether the plane is a wall. The order of the other segments is kept.
+template <class Kernel>
+void remove_corner_chords(std::vector<Building_segment_2<Kernel>>& segments, const std::vector<bool>& is_vertical,
+                          double radius, double longest)
+{
+  const auto point = [](const typename Kernel::Point_2& p) {
+    return std::array<double, 2>{{CGAL::to_double(p.x()), CGAL::to_double(p.y())}};
+  };
+  auto vertical = [&is_vertical](std::size_t plane) { return plane < is_vertical.size() && is_vertical[plane]; };
+  std::vector<Wall_line_2> lines;
+  for(std::size_t i = 0; i < segments.size(); ++i) {
+    const Building_segment_2<Kernel>& w = segments[i];
+    if(!w.is_facade || w.first_plane == w.second_plane || vertical(w.first_plane) == vertical(w.second_plane)) continue;
+    const std::array<double, 2> s = point(w.segment.source()), t = point(w.segment.target());
+    const double length = std::hypot(t[0] - s[0], t[1] - s[1]);
+    if(!(length > 0)) continue;
+    lines.push_back({i, vertical(w.first_plane) ? w.first_plane : w.second_plane, s,
+                     {{(t[0] - s[0]) / length, (t[1] - s[1]) / length}}, length});
+  }
+  std::vector<bool> chord(segments.size(), false);
+  for(std::size_t b = 0; b < segments.size(); ++b) {
+    const Building_segment_2<Kernel>& piece = segments[b];
+    if(!piece.is_facade || piece.first_plane != piece.second_plane) continue;
+    const std::array<double, 2> s = point(piece.segment.source()), t = point(piece.segment.target());
+    const double length = std::hypot(t[0] - s[0], t[1] - s[1]);
+    if(!(length > 0) || length > longest) continue;
+    const double reach = length + radius;
+    const std::optional<Wall_line_2> a = nearest_wall_line(lines, s, radius, reach);
+    const std::optional<Wall_line_2> c = nearest_wall_line(lines, t, radius, reach);
+    if(!a || !c || a->wall == c->wall) continue;
+    const double cross = a->direction[0] * c->direction[1] - a->direction[1] * c->direction[0];
+    if(std::abs(cross) < 0.5) continue; // sin 30 degrees
+    // the corner a.source + u a.direction = c.source + v c.direction
+    const double wx = c->source[0] - a->source[0], wy = c->source[1] - a->source[1];
+    const double u = (wx * c->direction[1] - wy * c->direction[0]) / cross;
+    const std::array<double, 2> corner{{a->source[0] + u * a->direction[0], a->source[1] + u * a->direction[1]}};
+    chord[b] = std::hypot(corner[0] - s[0], corner[1] - s[1]) <= reach &&
+               std::hypot(corner[0] - t[0], corner[1] - t[1]) <= reach;
+  }
+  std::size_t kept = 0;
+  for(std::size_t i = 0; i < segments.size(); ++i)
+    if(!chord[i]) segments[kept++] = segments[i];
+  segments.resize(kept);
+}
+
 } // namespace internal
 } // namespace Polygon_partition_simplification
 } // namespace CGAL
