@@ -314,8 +314,7 @@ void lift_and_extrude(const std::vector<typename Kernel::Point_3>& points, const
         {{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z())}});
   evidence.cell_of_point = arrangement.locate(evidence.points);
   // squares of half the planes' distance: the ground of a yard a few metres wide is open above
-  evidence.open_above =
-    open_above(evidence.points, 0.5 * settings.lift.facade_distance, settings.lift.height_threshold);
+  evidence.open_above = open_above(evidence.points, 0.5 * settings.lift.facade_distance, settings.lift.height_threshold);
   if(settings.lift.facade_samples > 0) {
     evidence.facades = facade_evidence<Kernel>(points, planes, settings.lift.facade_distance, settings.lift.facade_samples);
     evidence.cell_in_front = arrangement.locate(evidence.facades.in_front);

@@ -48,17 +48,25 @@ inline std::optional<Facade_end_2> nearest_facade_end(const std::vector<Facade_e
   return nearest;
 }
 
+/// The parameters (u, v) of the point p + u d = q + v e where two lines meet (unit directions
+/// `d` and `e`), if they make at least 30 degrees.
+inline std::optional<std::array<double, 2>> meeting_parameters(const std::array<double, 2>& p, const std::array<double, 2>& d,
+                                                               const std::array<double, 2>& q, const std::array<double, 2>& e)
+{
+  const double cross = d[0] * e[1] - d[1] * e[0];
+  if(std::abs(cross) < 0.5) return std::nullopt; // sin 30 degrees
+  const double wx = q[0] - p[0], wy = q[1] - p[1];
+  return std::array<double, 2>{{(wx * e[1] - wy * e[0]) / cross, (wx * d[1] - wy * d[0]) / cross}};
+}
+
 /// The corner where the lines of the ends `a` and `c` meet, if both ends run toward it (each end
 /// is behind the corner along its direction), the two lines make at least 30 degrees, and the
 /// corner is at most `reach` from each end.
 inline std::optional<std::array<double, 2>> corner_ahead(const Facade_end_2& a, const Facade_end_2& c, double reach)
 {
-  const double cross = a.direction[0] * c.direction[1] - a.direction[1] * c.direction[0];
-  if(std::abs(cross) < 0.5) return std::nullopt; // sin 30 degrees
-  // a.point + u a.direction = c.point + v c.direction
-  const double wx = c.point[0] - a.point[0], wy = c.point[1] - a.point[1];
-  const double u = (wx * c.direction[1] - wy * c.direction[0]) / cross;
-  const double v = (wx * a.direction[1] - wy * a.direction[0]) / cross;
+  const auto uv = meeting_parameters(a.point, a.direction, c.point, c.direction);
+  if(!uv) return std::nullopt;
+  const double u = (*uv)[0], v = (*uv)[1];
   if(!(u > 0 && v > 0 && u <= reach && v <= reach)) return std::nullopt;
   return std::array<double, 2>{{a.point[0] + u * a.direction[0], a.point[1] + u * a.direction[1]}};
 }
@@ -113,10 +121,10 @@ void close_outline_corners(std::vector<Building_segment_2<Kernel>>& segments, do
 }
 
 /// The line of a facade segment along a wall (the intersection of a wall's plane with a roof or
-/// the ground): the segment, the wall's plane, its source, its unit direction and its length.
+/// the ground): the wall's plane, the segment's source, its unit direction and its length.
 struct Wall_line_2
 {
-  std::size_t segment, wall;
+  std::size_t wall;
   std::array<double, 2> source, direction;
   double length;
 };
@@ -160,13 +168,12 @@ void remove_corner_chords(std::vector<Building_segment_2<Kernel>>& segments, con
   };
   auto vertical = [&is_vertical](std::size_t plane) { return plane < is_vertical.size() && is_vertical[plane]; };
   std::vector<Wall_line_2> lines;
-  for(std::size_t i = 0; i < segments.size(); ++i) {
-    const Building_segment_2<Kernel>& w = segments[i];
+  for(const Building_segment_2<Kernel>& w : segments) {
     if(!w.is_facade || w.first_plane == w.second_plane || vertical(w.first_plane) == vertical(w.second_plane)) continue;
     const std::array<double, 2> s = point(w.segment.source()), t = point(w.segment.target());
     const double length = std::hypot(t[0] - s[0], t[1] - s[1]);
     if(!(length > 0)) continue;
-    lines.push_back({i, vertical(w.first_plane) ? w.first_plane : w.second_plane, s,
+    lines.push_back({vertical(w.first_plane) ? w.first_plane : w.second_plane, s,
                      {{(t[0] - s[0]) / length, (t[1] - s[1]) / length}}, length});
   }
   std::vector<bool> chord(segments.size(), false);
@@ -180,12 +187,9 @@ void remove_corner_chords(std::vector<Building_segment_2<Kernel>>& segments, con
     const std::optional<Wall_line_2> a = nearest_wall_line(lines, s, radius, reach);
     const std::optional<Wall_line_2> c = nearest_wall_line(lines, t, radius, reach);
     if(!a || !c || a->wall == c->wall) continue;
-    const double cross = a->direction[0] * c->direction[1] - a->direction[1] * c->direction[0];
-    if(std::abs(cross) < 0.5) continue; // sin 30 degrees
-    // the corner a.source + u a.direction = c.source + v c.direction
-    const double wx = c->source[0] - a->source[0], wy = c->source[1] - a->source[1];
-    const double u = (wx * c->direction[1] - wy * c->direction[0]) / cross;
-    const std::array<double, 2> corner{{a->source[0] + u * a->direction[0], a->source[1] + u * a->direction[1]}};
+    const auto uv = meeting_parameters(a->source, a->direction, c->source, c->direction);
+    if(!uv) continue;
+    const std::array<double, 2> corner{{a->source[0] + (*uv)[0] * a->direction[0], a->source[1] + (*uv)[0] * a->direction[1]}};
     chord[b] = std::hypot(corner[0] - s[0], corner[1] - s[1]) <= reach &&
                std::hypot(corner[0] - t[0], corner[1] - t[1]) <= reach;
   }
